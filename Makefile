@@ -1,0 +1,83 @@
+# smallmlt build. `make run` renders the default scene, `make test` runs all
+# tests; both install missing Debian packages first (`make deps`).
+# SAN=1 builds with AddressSanitizer and UndefinedBehaviorSanitizer.
+
+CXX      ?= g++
+SAN      ?= 0
+BUILD    := $(if $(filter 1,$(SAN)),build-san,build)
+CXXFLAGS := -std=c++17 -O2 -g -Wall -Wextra -Werror -Isrc -Icl -MMD -MP
+LDLIBS   := -lOpenCL -ltinyobjloader -ltinyexr -lstb -lpthread
+ifeq ($(SAN),1)
+CXXFLAGS += -O1 -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=undefined
+LDFLAGS  += -fsanitize=address,undefined
+endif
+
+DEB_PACKAGES := g++ make pocl-opencl-icd ocl-icd-opencl-dev opencl-headers libstb-dev \
+                libtinyobjloader-dev libtinyexr-dev libgtest-dev
+
+CL_FILES   := $(sort $(wildcard cl/*.h cl/*.cl))
+LIB_SRC    := $(filter-out src/main.cpp,$(wildcard src/*.cpp))
+LIB_OBJ    := $(LIB_SRC:src/%.cpp=$(BUILD)/obj/%.o) $(BUILD)/obj/kernel_sources.o
+TEST_SRC   := $(wildcard test/*.cpp)
+TEST_OBJ   := $(TEST_SRC:test/%.cpp=$(BUILD)/obj/test/%.o)
+BIN        := $(BUILD)/smallmlt
+TEST_BIN   := $(BUILD)/smallmlt_tests
+
+.PHONY: all deps run test bench format clean
+
+all: $(BIN)
+
+deps:
+	@missing=$$(for p in $(DEB_PACKAGES); do \
+	    dpkg-query -W -f='$${Status}\n' $$p 2>/dev/null | grep -q '^install ok installed' || echo $$p; \
+	  done); \
+	if [ -n "$$missing" ]; then \
+	  echo "installing:" $$missing; \
+	  apt-get update -qq && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq $$missing; \
+	fi
+
+$(BUILD)/gen/kernel_sources.cpp: $(CL_FILES) src/embed_kernels.sh
+	@mkdir -p $(dir $@)
+	sh src/embed_kernels.sh $(CL_FILES) > $@.tmp && mv $@.tmp $@
+
+$(BUILD)/obj/kernel_sources.o: $(BUILD)/gen/kernel_sources.cpp
+	@mkdir -p $(dir $@)
+	$(CXX) $(CXXFLAGS) -c $< -o $@
+
+$(BUILD)/obj/%.o: src/%.cpp
+	@mkdir -p $(dir $@)
+	$(CXX) $(CXXFLAGS) -c $< -o $@
+
+$(BUILD)/obj/test/%.o: test/%.cpp
+	@mkdir -p $(dir $@)
+	$(CXX) $(CXXFLAGS) -Itest -c $< -o $@
+
+$(BUILD)/libsmallmlt.a: $(LIB_OBJ)
+	ar rcs $@ $^
+
+$(BIN): $(BUILD)/obj/main.o $(BUILD)/libsmallmlt.a
+	$(CXX) $(LDFLAGS) $^ -o $@ $(LDLIBS)
+
+$(TEST_BIN): $(TEST_OBJ) $(BUILD)/libsmallmlt.a
+	$(CXX) $(LDFLAGS) $^ -o $@ -lgtest -lgtest_main $(LDLIBS)
+
+run: deps
+	$(MAKE) $(BIN)
+	@mkdir -p out
+	$(BIN) render scenes/cornell-water.scene --out out/cornell-water.png
+
+test: deps
+	$(MAKE) $(BIN) $(TEST_BIN)
+	SMALLMLT_BIN=$(BIN) sh test/run_all.sh $(TEST_BIN)
+
+bench: deps
+	$(MAKE) $(BIN)
+	sh bench/throughput.sh $(BIN)
+
+format:
+	clang-format -i src/*.cpp src/*.hpp test/*.cpp test/*.hpp cl/*.cl cl/*.h
+
+clean:
+	rm -rf build build-san
+
+-include $(wildcard $(BUILD)/obj/*.d $(BUILD)/obj/test/*.d)

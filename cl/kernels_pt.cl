@@ -1,0 +1,27 @@
+/* Entry point of the path tracer (ordinary Monte Carlo). One work-item per
+ * pixel; sample s of pixel p uses the stream rng_key(seed, p, s), so an image
+ * depends only on the seed and the sample count, not on how samples are split
+ * into passes. accum holds per pixel (sum R, sum G, sum B, sum lum^2). */
+
+__kernel void pt_render(__global const Triangle* tris, __global const BvhNode* nodes,
+                        __global const Material* mats, __global const LightEntry* lights,
+                        const Frame frame, const ulong seed, const uint first_sample,
+                        const uint spp, __global float4* accum, __global ulong* ray_count) {
+    uint pixel = get_global_id(0);
+    if (pixel >= frame.width * frame.height) return;
+    SceneView sc = path_scene(tris, nodes, mats, lights, &frame);
+    float px = (float)(pixel % frame.width), py = (float)(pixel / frame.width);
+    float4 acc = accum[pixel];
+    uint rays = 0;
+    for (uint s = 0; s < spp; ++s) {
+        SampleSource src = smp_omc(rng_key(seed, pixel, first_sample + s));
+        float fx = (px + layout_unit(smp_draw(&src, 0u, 24u), 24u)) / (float)frame.width;
+        float fy = (py + layout_unit(smp_draw(&src, 1u, 24u), 24u)) / (float)frame.height;
+        PathResult r = path_trace(&sc, &src, camera_ray(&frame, fx, fy));
+        float y = path_luminance(r.radiance);
+        acc += (float4)(r.radiance, y * y);
+        rays += r.rays;
+    }
+    accum[pixel] = acc;
+    ray_count[pixel] += rays;
+}

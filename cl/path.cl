@@ -1,0 +1,146 @@
+/* The path: unidirectional path tracing with next-event estimation and MIS
+ * (power heuristic) at diffuse vertices, Russian roulette from bounce
+ * RR_START_BOUNCE. Written once for every method: it reads its numbers only
+ * through smp_draw(SampleSource*, ...) and does not know who provides them.
+ * Bounce b owns the numbers for scattering at the b-th surface vertex, so a
+ * path of depth D (D bounces at most) consumes bounces 0 .. D-1. */
+
+typedef struct {
+    const __global Triangle* tris;
+    const __global BvhNode* nodes;
+    const __global Material* mats;
+    const __global LightEntry* lights;
+    uint num_lights;
+    uint depth;
+} SceneView;
+
+typedef struct {
+    float3 radiance; /* F(x): the path's contribution, RGB */
+    uint rays;       /* rays traced: closest-hit and shadow */
+} PathResult;
+
+inline float3 path_rgb(const f32 c[3]) { return (float3)(c[0], c[1], c[2]); }
+
+inline float path_max3(float3 v) { return fmax(v.x, fmax(v.y, v.z)); }
+
+/* Direct light at a diffuse vertex x with normal n_wo (facing the viewer). */
+float3 path_next_event(const SceneView* sc, SampleSource* src, uint bounce, float3 x, float3 n_wo,
+                       const Material* m, uint* rays) {
+#if LAYOUT_HAS_NEE
+    uint pick = 0;
+#if SLOT_LIGHT_PICK >= 0
+    pick = light_pick(sc->lights, sc->num_lights,
+                      smp_draw(src, layout_dim(bounce, SLOT_LIGHT_PICK), LIGHT_PICK_BITS));
+#endif
+    const __global Triangle* lt = &sc->tris[sc->lights[pick].triangle];
+    float u1 = layout_unit(smp_draw(src, layout_dim(bounce, SLOT_LIGHT_U), 24u), 24u);
+    float u2 = layout_unit(smp_draw(src, layout_dim(bounce, SLOT_LIGHT_V), 24u), 24u);
+    LightSample ls;
+    if (!light_sample_tri(lt, sc->mats, x, u1, u2, &ls)) return (float3)(0.0f);
+    float cos_x = dot(n_wo, ls.wi);
+    if (cos_x <= 0.0f) return (float3)(0.0f);
+    Ray shadow;
+    shadow.o = geo_offset(x, n_wo);
+    shadow.d = ls.wi;
+    shadow.tmax = length(x + ls.wi * ls.dist - shadow.o) * (1.0f - 1e-4f);
+    Hit h;
+    ++*rays;
+    if (bvh_trace(sc->nodes, sc->tris, &shadow, &h, true)) return (float3)(0.0f);
+    float bsdf_pdf_w = cos_x * M_1_PI_F;
+    float w = light_power_heuristic(ls.pdf_w, bsdf_pdf_w);
+    float3 f = path_rgb(m->kd) * M_1_PI_F;
+    return ls.radiance * f * (cos_x * w / ls.pdf_w);
+#else
+    return (float3)(0.0f);
+#endif
+}
+
+/* Scatters at a surface vertex; returns the sampled direction and weight. */
+BsdfSample path_scatter(SampleSource* src, uint bounce, const Material* m, float3 wo, float3 n,
+                        float3 n_wo) {
+#if LAYOUT_HAS_DIELECTRIC
+    if (m->type == MAT_DIELECTRIC)
+        return bsdf_sample_dielectric(
+            m, wo, n, smp_draw(src, layout_dim(bounce, SLOT_FRESNEL), 16u), 16u);
+#endif
+#if LAYOUT_HAS_MIRROR
+    if (m->type == MAT_MIRROR) return bsdf_sample_mirror(m, wo, n_wo);
+#endif
+#if LAYOUT_HAS_DIFFUSE
+    float u1 = layout_unit(smp_draw(src, layout_dim(bounce, SLOT_BSDF_U), 24u), 24u);
+    float u2 = layout_unit(smp_draw(src, layout_dim(bounce, SLOT_BSDF_V), 24u), 24u);
+    return bsdf_sample_diffuse(m, n_wo, u1, u2);
+#else
+    BsdfSample none;
+    none.weight = (float3)(0.0f);
+    none.pdf_w = 0.0f;
+    none.wi = n_wo;
+    return none;
+#endif
+}
+
+/* Russian roulette after scattering at `bounce`: false ends the path,
+ * otherwise *beta is divided by the survival probability. */
+inline bool path_survives(SampleSource* src, uint bounce, float3* beta) {
+#if SLOT_RR >= 0
+    if (bounce < RR_START_BOUNCE) return true;
+    float q = layout_quantize_prob(fmin(0.95f, path_max3(*beta)), 16u);
+    if (layout_unit(smp_draw(src, layout_dim(bounce, SLOT_RR), 16u), 16u) >= q) return false;
+    *beta /= q;
+#endif
+    return true;
+}
+
+/* Radiance carried to the camera along `ray` by the path that src defines. */
+PathResult path_trace(const SceneView* sc, SampleSource* src, Ray ray) {
+    PathResult res;
+    res.radiance = (float3)(0.0f);
+    res.rays = 0;
+    float3 beta = (float3)(1.0f);
+    float prev_pdf_w = 0.0f; /* 0: previous vertex was specular or the camera */
+    for (uint bounce = 0;; ++bounce) {
+        Hit hit;
+        ++res.rays;
+        if (!bvh_trace(sc->nodes, sc->tris, &ray, &hit, false)) break;
+        const __global Triangle* tri = &sc->tris[hit.tri];
+        Material m = sc->mats[tri->material];
+        float3 n = normalize(geo_tri_normal(tri));
+        float3 wo = -ray.d;
+        float cos_o = dot(n, wo);
+        if (m.emissive && cos_o > 0.0f) {
+            float w = 1.0f;
+            if (prev_pdf_w > 0.0f)
+                w = light_power_heuristic(prev_pdf_w, light_pdf_w(tri, hit.t, cos_o));
+            res.radiance += beta * path_rgb(m.ke) * w;
+        }
+        if (bounce >= sc->depth) break;
+        float3 x = ray.o + ray.d * hit.t;
+        float3 n_wo = cos_o >= 0.0f ? n : -n;
+        if (m.type == MAT_DIFFUSE)
+            res.radiance += beta * path_next_event(sc, src, bounce, x, n_wo, &m, &res.rays);
+        BsdfSample bs = path_scatter(src, bounce, &m, wo, n, n_wo);
+        beta *= bs.weight;
+        prev_pdf_w = bs.pdf_w;
+        if (!(path_max3(beta) > 0.0f) || !path_survives(src, bounce, &beta)) break;
+        ray.o = geo_offset(x, dot(bs.wi, n) >= 0.0f ? n : -n);
+        ray.d = bs.wi;
+        ray.tmax = INFINITY;
+    }
+    return res;
+}
+
+/* Luminance (Rec. 709 weights): the MLT target function I = lum(F). */
+inline float path_luminance(float3 c) { return 0.2126f * c.x + 0.7152f * c.y + 0.0722f * c.z; }
+
+inline SceneView path_scene(const __global Triangle* tris, const __global BvhNode* nodes,
+                            const __global Material* mats, const __global LightEntry* lights,
+                            const Frame* frame) {
+    SceneView sc;
+    sc.tris = tris;
+    sc.nodes = nodes;
+    sc.mats = mats;
+    sc.lights = lights;
+    sc.num_lights = frame->num_lights;
+    sc.depth = frame->depth;
+    return sc;
+}

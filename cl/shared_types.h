@@ -1,0 +1,84 @@
+/* Structs seen by both the host (C++17) and the kernels (OpenCL C 1.2).
+ * This header is their only definition. Fields are 32-bit scalars or arrays
+ * of them, so size and offsets are the same on every compiler; the host
+ * static_asserts them (src/shared_layout.cpp) and the probe_layout kernel
+ * reports the device's view for a test to compare. */
+#ifndef SMALLMLT_SHARED_TYPES_H
+#define SMALLMLT_SHARED_TYPES_H
+
+#ifdef __OPENCL_VERSION__
+typedef uint u32;
+typedef float f32;
+#else
+#include <cstdint>
+typedef std::uint32_t u32;
+typedef float f32;
+#endif
+
+/* Material.type */
+#define MAT_DIFFUSE 0u
+#define MAT_MIRROR 1u
+#define MAT_DIELECTRIC 2u
+
+/* Marks "no light" in Triangle.light_index. */
+#define LIGHT_NONE 0xFFFFFFFFu
+
+/* One triangle: v0 and the edges e1 = v1 - v0, e2 = v2 - v0 (world units).
+ * The geometric normal cross(e1, e2) is its front face (counter-clockwise).
+ * light_pick_prob is the probability that next-event estimation picks this
+ * triangle (0 if it does not emit). 48 bytes. */
+typedef struct {
+    f32 v0[3];
+    u32 material;
+    f32 e1[3];
+    f32 light_pick_prob;
+    f32 e2[3];
+    u32 light_index;
+} Triangle;
+
+/* Flattened BVH node, depth-first order. count == 0: interior node whose
+ * first child is the next node and second child is node `offset`.
+ * count > 0: leaf holding triangles offset .. offset + count - 1. 32 bytes. */
+typedef struct {
+    f32 lo[3];
+    u32 offset;
+    f32 hi[3];
+    u32 count;
+} BvhNode;
+
+/* kd: diffuse albedo, ks: mirror reflectance, ke: emitted radiance
+ * (W sr^-1 m^-2 per channel, front face only), ior: a dielectric's index of
+ * refraction; its inside is on the back side of its triangles and the front
+ * side is vacuum (index 1). emissive is 1 when any ke channel is > 0. 48 bytes. */
+typedef struct {
+    f32 kd[3];
+    u32 type;
+    f32 ke[3];
+    f32 ior;
+    f32 ks[3];
+    u32 emissive;
+} Material;
+
+/* An emissive triangle for next-event estimation. The triangle is picked when
+ * the light-pick number u (an integer in [0, 2^bits)) satisfies
+ * cdf_lo <= u < cdf_hi, so the pick probability is exactly
+ * (cdf_hi - cdf_lo) / 2^bits at the slot's stored precision. 8 bytes. */
+typedef struct {
+    u32 triangle;
+    u32 cdf_hi;
+} LightEntry;
+
+/* Pinhole camera and film. A film position (fx, fy) in [0,1)^2 maps to the
+ * direction top_left + fx * du + fy * dv (fy = 0 is the top row). 64 bytes. */
+typedef struct {
+    f32 eye[3];
+    u32 width;
+    f32 top_left[3];
+    u32 height;
+    f32 du[3];
+    u32 depth;
+    f32 dv[3];
+    u32 num_lights;
+} Frame;
+
+#endif

@@ -1,0 +1,160 @@
+#include "cli.hpp"
+
+#include "error.hpp"
+#include "image.hpp"
+#include "scene.hpp"
+
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+
+namespace smallmlt {
+
+const char* usage_text() {
+    return R"(smallmlt: Metropolis light transport for small OpenCL devices
+
+Usage:
+  smallmlt render SCENE [options]   render a .scene file
+  smallmlt devices                  list OpenCL devices and their memory
+  smallmlt --help | --version
+
+Render options:
+  --spp N            samples per pixel (default 16)
+  --time SECONDS     render for this long instead of a sample count
+  --seed S           seed of all random numbers (default 1); same seed, same image
+  --out FILE         output image: .png (tone-mapped sRGB), .pfm or .exr (linear
+                     radiance); may be repeated (default: SCENE's name + .png)
+  --width W          film width in pixels (overrides the scene)
+  --height H         film height in pixels (overrides the scene)
+  --depth D          maximum bounces, 0..64 (overrides the scene)
+  --device INDEX     OpenCL device from `smallmlt devices` (default 0)
+  --quiet            no progress bar and no summary line
+
+Exit status: 0 success, 1 bad input or device error, 2 bad command line.
+The scene format is described in doc/scene-format.md.
+)";
+}
+
+namespace {
+
+struct ArgReader {
+    int argc;
+    const char* const* argv;
+    int i;
+
+    bool done() const { return i >= argc; }
+    std::string next() { return argv[i++]; }
+    // Value of `flag`, given as "--flag value" or "--flag=value".
+    std::string value(const std::string& flag, const std::string& arg) {
+        std::size_t eq = arg.find('=');
+        if (eq != std::string::npos) return arg.substr(eq + 1);
+        if (done()) throw UsageError(flag + ": missing value");
+        return next();
+    }
+};
+
+long long to_int(const std::string& flag, const std::string& v, long long lo, long long hi) {
+    errno = 0;
+    char* end = nullptr;
+    long long x = std::strtoll(v.c_str(), &end, 10);
+    if (v.empty() || *end != '\0' || errno == ERANGE)
+        throw UsageError(flag + ": '" + v + "' is not an integer");
+    if (x < lo || x > hi)
+        throw UsageError(flag + ": " + v + " is out of range " + std::to_string(lo) + ".." +
+                         std::to_string(hi));
+    return x;
+}
+
+std::uint64_t to_u64(const std::string& flag, const std::string& v) {
+    errno = 0;
+    char* end = nullptr;
+    unsigned long long x = std::strtoull(v.c_str(), &end, 10);
+    if (v.empty() || v[0] == '-' || *end != '\0' || errno == ERANGE)
+        throw UsageError(flag + ": '" + v + "' is not a non-negative integer");
+    return x;
+}
+
+double to_seconds(const std::string& flag, const std::string& v) {
+    char* end = nullptr;
+    double x = std::strtod(v.c_str(), &end);
+    if (v.empty() || *end != '\0' || !std::isfinite(x) || x <= 0)
+        throw UsageError(flag + ": '" + v + "' is not a positive number of seconds");
+    return x;
+}
+
+std::string default_out(const std::string& scene) {
+    std::size_t slash = scene.find_last_of('/');
+    std::string base = scene.substr(slash == std::string::npos ? 0 : slash + 1);
+    std::size_t dot = base.find_last_of('.');
+    return (dot == std::string::npos ? base : base.substr(0, dot)) + ".png";
+}
+
+RenderOptions parse_render(ArgReader& r) {
+    RenderOptions o;
+    while (!r.done()) {
+        std::string arg = r.next();
+        std::string flag = arg.substr(0, arg.find('='));
+        if (flag == "--spp") {
+            o.spp = std::uint32_t(to_int(flag, r.value(flag, arg), 1, 1 << 30));
+        } else if (flag == "--time") {
+            o.time_s = to_seconds(flag, r.value(flag, arg));
+        } else if (flag == "--seed") {
+            o.seed = to_u64(flag, r.value(flag, arg));
+        } else if (flag == "--out") {
+            std::string f = r.value(flag, arg);
+            image_format_of(f);
+            o.outs.push_back(f);
+        } else if (flag == "--width") {
+            o.width = int(to_int(flag, r.value(flag, arg), 1, kMaxFilmSide));
+        } else if (flag == "--height") {
+            o.height = int(to_int(flag, r.value(flag, arg), 1, kMaxFilmSide));
+        } else if (flag == "--depth") {
+            o.depth = int(to_int(flag, r.value(flag, arg), 0, kMaxDepth));
+        } else if (flag == "--device") {
+            o.device = int(to_int(flag, r.value(flag, arg), 0, 1 << 20));
+        } else if (arg == "--quiet") {
+            o.quiet = true;
+        } else if (arg.rfind("-", 0) == 0) {
+            throw UsageError("unknown option " + flag + " (see smallmlt --help)");
+        } else if (o.scene.empty()) {
+            o.scene = arg;
+        } else {
+            throw UsageError("unexpected argument '" + arg + "': one scene at a time");
+        }
+    }
+    if (o.scene.empty()) throw UsageError("render: no scene file given");
+    if (o.spp && o.time_s) throw UsageError("--spp and --time: give one of them, not both");
+    if (!o.spp && !o.time_s) o.spp = kDefaultSpp;
+    if (o.outs.empty()) o.outs.push_back(default_out(o.scene));
+    return o;
+}
+
+} // namespace
+
+Command parse_command_line(int argc, const char* const* argv) {
+    ArgReader r{argc, argv, 1};
+    Command c;
+    if (r.done()) throw UsageError("no command given (see smallmlt --help)");
+    std::string cmd = r.next();
+    if (cmd == "--help" || cmd == "-h" || cmd == "help") {
+        c.kind = CommandKind::Help;
+    } else if (cmd == "--version") {
+        c.kind = CommandKind::Version;
+    } else if (cmd == "devices") {
+        c.kind = CommandKind::Devices;
+        if (!r.done()) throw UsageError("devices: unexpected argument '" + r.next() + "'");
+    } else if (cmd == "render") {
+        for (int i = r.i; i < argc; ++i)
+            if (std::string(argv[i]) == "--help" || std::string(argv[i]) == "-h") {
+                c.kind = CommandKind::Help;
+                return c;
+            }
+        c.kind = CommandKind::Render;
+        c.render = parse_render(r);
+    } else {
+        throw UsageError("unknown command '" + cmd + "' (expected render or devices; see --help)");
+    }
+    return c;
+}
+
+} // namespace smallmlt

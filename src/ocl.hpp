@@ -1,0 +1,112 @@
+// OpenCL host plumbing: checked calls that report file, line and the error's
+// name; device discovery; program builds from the embedded kernel sources.
+#pragma once
+#define CL_TARGET_OPENCL_VERSION 120
+#include <CL/cl.h>
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace smallmlt {
+
+const char* cl_error_name(cl_int err);
+
+// Throws InputError "file:line: what failed: CL_ERROR_NAME".
+void cl_check(cl_int err, const char* what, const char* file, int line);
+
+#define CL_CHECK(call) ::smallmlt::cl_check((call), #call, __FILE__, __LINE__)
+
+struct DeviceInfo {
+    cl_platform_id platform = nullptr;
+    cl_device_id id = nullptr;
+    std::string platform_name, name, version, c_version;
+    std::uint64_t global_mem_bytes = 0, max_alloc_bytes = 0, local_mem_bytes = 0;
+    std::uint32_t compute_units = 0;
+    std::size_t max_work_group = 0;
+    bool int64_atomics = false;
+};
+
+// Every device of every platform, in a stable order (the --device index).
+std::vector<DeviceInfo> cl_list_devices();
+
+// Owns a context and an in-order queue on one device.
+class ClContext {
+  public:
+    explicit ClContext(int device_index = 0);
+    ~ClContext();
+    ClContext(const ClContext&) = delete;
+    ClContext& operator=(const ClContext&) = delete;
+
+    const DeviceInfo& device() const { return info_; }
+    cl_context context() const { return ctx_; }
+    cl_command_queue queue() const { return queue_; }
+
+    // Builds a program from embedded kernel files (names as "cl/rng.cl"),
+    // joined in order, each preceded by a #line directive naming it, after
+    // `defines`. A failed build throws with the compiler's log.
+    cl_program build(const std::vector<std::string>& files, const std::string& defines) const;
+
+  private:
+    DeviceInfo info_;
+    cl_context ctx_ = nullptr;
+    cl_command_queue queue_ = nullptr;
+};
+
+// A device buffer released on destruction.
+class ClBuffer {
+  public:
+    ClBuffer() = default;
+    ClBuffer(const ClContext& cl, cl_mem_flags flags, std::size_t bytes, const void* host = nullptr);
+    ~ClBuffer();
+    ClBuffer(ClBuffer&& o) noexcept;
+    ClBuffer& operator=(ClBuffer&& o) noexcept;
+    ClBuffer(const ClBuffer&) = delete;
+    ClBuffer& operator=(const ClBuffer&) = delete;
+
+    cl_mem get() const { return mem_; }
+    std::size_t bytes() const { return bytes_; }
+    void read(const ClContext& cl, void* dst) const;
+    void write(const ClContext& cl, const void* src) const;
+    void fill_zero(const ClContext& cl) const;
+
+  private:
+    cl_mem mem_ = nullptr;
+    std::size_t bytes_ = 0;
+};
+
+// A kernel released on destruction, with typed argument setting.
+class ClKernel {
+  public:
+    ClKernel(cl_program program, const char* name);
+    ~ClKernel();
+    ClKernel(const ClKernel&) = delete;
+    ClKernel& operator=(const ClKernel&) = delete;
+
+    template <typename... Args> void set_args(const Args&... args) {
+        cl_uint i = 0;
+        (set_one(i++, args), ...);
+    }
+    // Runs over `items` work-items (rounded up to whole work-groups).
+    void run(const ClContext& cl, std::size_t items) const;
+    cl_kernel get() const { return k_; }
+    const std::string& name() const { return name_; }
+
+  private:
+    void set_one(cl_uint i, const ClBuffer& b);
+    template <typename T> void set_one(cl_uint i, const T& v) { set_raw(i, sizeof(T), &v); }
+    void set_raw(cl_uint i, std::size_t bytes, const void* v);
+    cl_kernel k_ = nullptr;
+    std::string name_;
+};
+
+// Releases a program on destruction.
+struct ClProgram {
+    cl_program p = nullptr;
+    explicit ClProgram(cl_program prog) : p(prog) {}
+    ~ClProgram();
+    ClProgram(const ClProgram&) = delete;
+    ClProgram& operator=(const ClProgram&) = delete;
+};
+
+} // namespace smallmlt

@@ -1,0 +1,77 @@
+#include "path_tracer.hpp"
+
+namespace smallmlt {
+
+const std::vector<std::string>& pt_program_files() {
+    static const std::vector<std::string> files = {
+        "cl/shared_types.h", "cl/rng.cl",  "cl/layout.cl", "cl/sample_omc.cl",
+        "cl/geometry.cl",    "cl/bvh.cl",  "cl/bsdf.cl",   "cl/light.cl",
+        "cl/path.cl",        "cl/camera.cl", "cl/kernels_pt.cl"};
+    return files;
+}
+
+namespace {
+
+template <typename T> ClBuffer upload(const ClContext& cl, const std::vector<T>& v) {
+    return ClBuffer(cl, CL_MEM_READ_ONLY, v.size() * sizeof(T), v.data());
+}
+
+} // namespace
+
+PathTracer::PathTracer(const ClContext& cl, const DeviceScene& ds, std::uint64_t seed)
+    : cl_(cl), ds_(ds), seed_(seed), program_(cl.build(pt_program_files(), ds.layout.defines())),
+      kernel_(program_.p, "pt_render"), tris_(upload(cl, ds.tris)), nodes_(upload(cl, ds.nodes)),
+      mats_(upload(cl, ds.materials)), lights_(upload(cl, ds.lights)),
+      accum_(cl, CL_MEM_READ_WRITE, pixels() * 4 * sizeof(float)),
+      ray_count_(cl, CL_MEM_READ_WRITE, pixels() * sizeof(cl_ulong)) {
+    accum_.fill_zero(cl);
+    ray_count_.fill_zero(cl);
+}
+
+void PathTracer::add_samples(std::uint32_t n) {
+    if (n == 0) return;
+    cl_ulong seed = seed_;
+    cl_uint first = spp_, count = n;
+    kernel_.set_args(tris_, nodes_, mats_, lights_, ds_.frame, seed, first, count, accum_,
+                     ray_count_);
+    kernel_.run(cl_, pixels());
+    spp_ += n;
+}
+
+std::uint64_t PathTracer::rays() const {
+    std::vector<cl_ulong> counts(pixels());
+    ray_count_.read(cl_, counts.data());
+    std::uint64_t sum = 0;
+    for (cl_ulong c : counts) sum += c;
+    return sum;
+}
+
+std::vector<float> PathTracer::read_accum() const {
+    std::vector<float> acc(pixels() * 4);
+    accum_.read(cl_, acc.data());
+    return acc;
+}
+
+Image PathTracer::image() const {
+    std::vector<float> acc = read_accum();
+    Image img(int(ds_.frame.width), int(ds_.frame.height));
+    float inv = spp_ ? 1.0f / float(spp_) : 0.0f;
+    for (std::size_t p = 0; p < pixels(); ++p)
+        for (int c = 0; c < 3; ++c) img.rgb[3 * p + c] = acc[4 * p + c] * inv;
+    return img;
+}
+
+Image PathTracer::luminance_variance() const {
+    std::vector<float> acc = read_accum();
+    Image img(int(ds_.frame.width), int(ds_.frame.height));
+    if (spp_ < 2) return img;
+    double n = spp_;
+    for (std::size_t p = 0; p < pixels(); ++p) {
+        double mean = (0.2126 * acc[4 * p] + 0.7152 * acc[4 * p + 1] + 0.0722 * acc[4 * p + 2]) / n;
+        double var = (acc[4 * p + 3] / n - mean * mean) * n / (n - 1);
+        for (int c = 0; c < 3; ++c) img.rgb[3 * p + c] = float(var > 0 ? var : 0);
+    }
+    return img;
+}
+
+} // namespace smallmlt

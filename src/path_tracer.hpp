@@ -1,0 +1,41 @@
+// Ordinary Monte Carlo (path tracing) on the device: owns the scene buffers,
+// the per-pixel accumulators and the pt_render kernel (cl/kernels_pt.cl).
+#pragma once
+#include "device_scene.hpp"
+#include "image.hpp"
+#include "ocl.hpp"
+
+#include <cstdint>
+#include <memory>
+
+namespace smallmlt {
+
+// Kernel files of the path-tracing program, in build order.
+const std::vector<std::string>& pt_program_files();
+
+class PathTracer {
+  public:
+    PathTracer(const ClContext& cl, const DeviceScene& ds, std::uint64_t seed);
+
+    // Adds n samples per pixel (numbered spp() .. spp() + n - 1).
+    void add_samples(std::uint32_t n);
+    std::uint32_t spp() const { return spp_; }
+    std::uint64_t rays() const;
+    std::uint64_t pixels() const { return std::uint64_t(ds_.frame.width) * ds_.frame.height; }
+
+    Image image() const;            // mean radiance per pixel
+    Image luminance_variance() const; // per-pixel sample variance of luminance (in all channels)
+
+  private:
+    std::vector<float> read_accum() const;
+
+    const ClContext& cl_;
+    const DeviceScene& ds_;
+    std::uint64_t seed_;
+    std::uint32_t spp_ = 0;
+    ClProgram program_;
+    ClKernel kernel_;
+    ClBuffer tris_, nodes_, mats_, lights_, accum_, ray_count_;
+};
+
+} // namespace smallmlt

@@ -1,0 +1,10 @@
+// `smallmlt render`: load, prepare, render with the path tracer, write files.
+#pragma once
+#include "cli.hpp"
+
+namespace smallmlt {
+
+int run_render(const RenderOptions& o);
+int run_devices();
+
+} // namespace smallmlt

@@ -1,0 +1,12 @@
+// Size and field offsets of every shared struct as the host compiler lays
+// them out, in the order of the probe_layout kernel (cl/kernels_probe.cl).
+#pragma once
+#include "shared_types.h"
+
+#include <vector>
+
+namespace smallmlt {
+
+std::vector<std::uint32_t> host_layout();
+
+} // namespace smallmlt
