@@ -80,7 +80,9 @@ Scene load_scene(const std::string& path) {
             seen_depth = true;
         } else if (d == "mesh") {
             expect_args(t, 1, path, line, "mesh FILE.obj");
-            load_obj(dir_of(path) + t[1], path + ":" + std::to_string(line), scene);
+            std::string obj = dir_of(path) + t[1];
+            if (!std::ifstream(obj)) throw input_error(path, line, "cannot open mesh file " + obj);
+            load_obj(obj, path + ":" + std::to_string(line), scene);
             ++meshes;
         } else {
             throw input_error(path, line,

@@ -1,0 +1,76 @@
+#!/bin/sh
+# Command-line behaviour of the smallmlt binary: exit codes, messages that
+# name the flag or file, and no output file when a render fails.
+# Usage: cli_test.sh BIN. Prints one line per check and "N passed, N failed".
+set -u
+BIN=$1
+DIR=build/test-scratch/cli
+rm -rf "$DIR" && mkdir -p "$DIR"
+pass=0
+fail=0
+
+# check NAME EXPECTED_EXIT EXPECTED_TEXT -- COMMAND...
+# An empty EXPECTED_TEXT means the command must print nothing at all.
+check() {
+    name=$1 want_rc=$2 want_text=$3
+    shift 4
+    out=$("$@" 2>&1)
+    rc=$?
+    if [ -z "$want_text" ]; then text_ok=$([ -z "$out" ] && echo 1); else
+        text_ok=$(printf '%s' "$out" | grep -qF -- "$want_text" && echo 1); fi
+    if [ "$rc" -eq "$want_rc" ] && [ -n "$text_ok" ]; then
+        pass=$((pass + 1))
+        echo "ok   $name"
+    else
+        fail=$((fail + 1))
+        echo "FAIL $name: exit $rc (want $want_rc), output:"
+        printf '%s\n' "$out" | sed 's/^/     /'
+    fi
+}
+
+# absent NAME FILE: the file must not exist
+absent() {
+    if [ -e "$2" ]; then
+        fail=$((fail + 1))
+        echo "FAIL $1: $2 exists"
+    else
+        pass=$((pass + 1))
+        echo "ok   $1"
+    fi
+}
+
+check help 0 "smallmlt render SCENE" -- "$BIN" --help
+check render_help 0 "--spp N" -- "$BIN" render --help
+check version 0 "smallmlt " -- "$BIN" --version
+check devices 0 "global memory" -- "$BIN" devices
+check no_command 2 "no command given" -- "$BIN"
+check unknown_command 2 "unknown command 'draw'" -- "$BIN" draw
+check unknown_flag 2 "unknown option --fast" -- "$BIN" render scenes/cornell.scene --fast
+check spp_zero 2 "--spp: 0 is out of range" -- "$BIN" render scenes/cornell.scene --spp 0
+check spp_text 2 "--spp: 'many' is not an integer" -- "$BIN" render scenes/cornell.scene --spp many
+check spp_missing 2 "--spp: missing value" -- "$BIN" render scenes/cornell.scene --spp
+check time_negative 2 "--time: '-1' is not a positive" -- "$BIN" render scenes/cornell.scene --time -1
+check time_nan 2 "--time: 'nan' is not a positive" -- "$BIN" render scenes/cornell.scene --time nan
+check spp_and_time 2 "give one of them" -- "$BIN" render scenes/cornell.scene --spp 1 --time 1
+check depth_range 2 "--depth: 99 is out of range 0..64" -- "$BIN" render scenes/cornell.scene --depth 99
+check width_zero 2 "--width: 0 is out of range" -- "$BIN" render scenes/cornell.scene --width 0
+check out_format 2 "--out $DIR/x.jpg: unknown image format" -- "$BIN" render scenes/cornell.scene --out "$DIR/x.jpg"
+check out_dir 2 "does not exist or is not writable" -- "$BIN" render scenes/cornell.scene --out "$DIR/no/x.png"
+check device_range 2 "--device: index 99 out of range" -- "$BIN" render scenes/cornell.scene --device 99 --out "$DIR/dev.png"
+absent device_range_no_file "$DIR/dev.png"
+check no_scene 2 "no scene file given" -- "$BIN" render
+check missing_scene 1 "nope.scene: cannot open scene file" -- "$BIN" render nope.scene --out "$DIR/missing.png"
+absent missing_scene_no_file "$DIR/missing.png"
+printf 'film 8 8\nlens 1\n' > "$DIR/bad.scene"
+check bad_scene 1 "bad.scene:2: unknown directive 'lens'" -- "$BIN" render "$DIR/bad.scene" --out "$DIR/bad.png"
+absent bad_scene_no_file "$DIR/bad.png"
+check render_ok 0 "8x8, 2 spp" -- "$BIN" render scenes/cornell.scene --width 8 --height 8 --spp 2 --out "$DIR/ok.png" --out "$DIR/ok.pfm"
+check render_quiet 0 "" -- "$BIN" render scenes/cornell.scene --width 8 --height 8 --spp 1 --quiet --out "$DIR/q.exr"
+for f in ok.png ok.pfm q.exr; do
+    if [ -s "$DIR/$f" ]; then pass=$((pass + 1)); echo "ok   wrote $f"; else fail=$((fail + 1)); echo "FAIL $f missing"; fi
+done
+leftover=$(ls -A "$DIR" | grep '^\.tmp-' || true)
+if [ -z "$leftover" ]; then pass=$((pass + 1)); echo "ok   no temporary files"; else fail=$((fail + 1)); echo "FAIL temporary files left: $leftover"; fi
+
+echo "cli: $pass passed, $fail failed"
+[ "$fail" -eq 0 ]

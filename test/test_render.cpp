@@ -1,0 +1,77 @@
+// Path-tracer renders against analytic and statistical expectations:
+// the furnace, determinism, and 1/spp convergence of pixel variance.
+#include "test_support.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+using namespace smallmlt;
+
+namespace {
+
+double pixel_luminance(const Image& img, std::size_t p) {
+    return 0.2126 * img.rgb[3 * p] + 0.7152 * img.rgb[3 * p + 1] + 0.0722 * img.rgb[3 * p + 2];
+}
+
+} // namespace
+
+// Every face has Kd 0.5 and Ke 1 and the box is closed, so the radiance of
+// every path prefix is known: L = sum_{i=0..depth} 0.5^i.
+class Furnace : public ::testing::TestWithParam<int> {};
+
+TEST_P(Furnace, MeanRadianceMatchesAnalyticWithinHalfPercent) {
+    int depth = GetParam();
+    DeviceScene ds = prepare_scene(test::scene("furnace", 64, 64, depth));
+    Image img = test::render_pt(ds, 11, 64);
+    double expected = 0;
+    for (int i = 0; i <= depth; ++i) expected += std::pow(0.5, i);
+    double mean = img.mean_luminance();
+    EXPECT_NEAR(mean, expected, 0.005 * expected) << "depth " << depth;
+}
+
+INSTANTIATE_TEST_SUITE_P(Depths, Furnace, ::testing::Values(1, 4, 24));
+
+TEST(Render, SameSeedSameImageWhateverThePassSplit) {
+    DeviceScene ds = prepare_scene(test::scene("cornell", 32, 32));
+    Image a = test::render_pt(ds, 5, 8);
+    Image b = test::render_pt(ds, 5, 8);
+    EXPECT_EQ(a.rgb, b.rgb);
+    PathTracer split(test::cl(), ds, 5);
+    split.add_samples(3);
+    split.add_samples(5);
+    EXPECT_EQ(split.image().rgb, a.rgb);
+    Image other = test::render_pt(ds, 6, 8);
+    EXPECT_NE(other.rgb, a.rgb);
+}
+
+// Two independent renders A, B at n spp: E[(A - B)^2] / 2 is the per-pixel
+// variance, which must fall as 1/n: the log-log slope over n = 2..32 lies
+// within 10% of -1. Measured on the lower half of the film: the directly
+// seen light's edge pixels (a few dozen at this size) would otherwise
+// dominate the sum and make the estimate rest on a handful of pixels.
+TEST(Render, PixelVarianceFallsAsOneOverSpp) {
+    DeviceScene ds = prepare_scene(test::scene("cornell", 96, 96));
+    std::vector<double> log_n, log_var;
+    for (std::uint32_t n : {2u, 8u, 32u}) {
+        Image a = test::render_pt(ds, 100 + n, n);
+        Image b = test::render_pt(ds, 200 + n, n);
+        double sum = 0;
+        std::size_t first = std::size_t(a.width) * (a.height / 2);
+        std::size_t pixels = std::size_t(a.width) * a.height - first;
+        for (std::size_t p = first; p < first + pixels; ++p) {
+            double d = pixel_luminance(a, p) - pixel_luminance(b, p);
+            sum += 0.5 * d * d;
+        }
+        log_n.push_back(std::log(double(n)));
+        log_var.push_back(std::log(sum / double(pixels)));
+    }
+    double mx = (log_n[0] + log_n[1] + log_n[2]) / 3, my = (log_var[0] + log_var[1] + log_var[2]) / 3;
+    double sxy = 0, sxx = 0;
+    for (int i = 0; i < 3; ++i) {
+        sxy += (log_n[i] - mx) * (log_var[i] - my);
+        sxx += (log_n[i] - mx) * (log_n[i] - mx);
+    }
+    double slope = sxy / sxx;
+    EXPECT_NEAR(slope, -1.0, 0.1);
+}

@@ -1,0 +1,118 @@
+// Scene, OBJ and MTL readers: a valid scene loads; each unsupported or
+// malformed input gives its own error naming the file and line.
+#include "error.hpp"
+#include "test_support.hpp"
+
+#include <gtest/gtest.h>
+
+using namespace smallmlt;
+
+namespace {
+
+const char* kScene = "film 8 8\ncamera 0 1 3  0 1 0  0 1 0  40\ndepth 4\nmesh m.obj\n";
+const char* kObj = "mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl white\nf 1 2 3\n";
+const char* kMtl = "newmtl white\nKd 0.5 0.5 0.5\nnewmtl lamp\nKe 1 1 1\n";
+
+struct Files {
+    std::string scene = kScene, obj = kObj, mtl = kMtl;
+};
+
+// Writes the three files into a fresh directory and loads the scene;
+// returns the error message ("" if it loaded).
+std::string load_error(const Files& f, const std::string& dir_name) {
+    std::string dir = test::scratch_dir("parse-" + dir_name);
+    test::write_file(dir + "/s.scene", f.scene);
+    test::write_file(dir + "/m.obj", f.obj);
+    test::write_file(dir + "/m.mtl", f.mtl);
+    try {
+        load_scene(dir + "/s.scene");
+    } catch (const InputError& e) {
+        std::string msg = e.what();
+        return msg.substr(msg.find(dir_name) + dir_name.size() + 1); // relative to dir
+    }
+    return "";
+}
+
+struct Case {
+    const char* name;
+    const char* file; // which file to change: scene, obj or mtl
+    const char* text;
+    const char* expected; // the message must start with this
+};
+
+const Case kCases[] = {
+    {"unknown_directive", "scene", "film 8 8\nlens 2\n", "s.scene:2: unknown directive 'lens'"},
+    {"film_arity", "scene", "film 8\n", "s.scene:1: 'film' takes 2 value(s)"},
+    {"film_zero", "scene", "film 0 8\n", "s.scene:1: film size must be 1..16384"},
+    {"film_huge", "scene", "film 100000 8\n", "s.scene:1: film size must be 1..16384"},
+    {"film_text", "scene", "film 8 abc\n", "s.scene:1: film height: 'abc' is not an integer"},
+    {"film_twice", "scene", "film 8 8\nfilm 8 8\n", "s.scene:2: 'film' given twice"},
+    {"depth_range", "scene", "depth 65\n", "s.scene:1: depth must be 0..64"},
+    {"depth_negative", "scene", "depth -1\n", "s.scene:1: depth must be 0..64"},
+    {"camera_nan", "scene", "camera 0 nan 3  0 1 0  0 1 0  40\n",
+     "s.scene:1: camera eye: 'nan' is not finite"},
+    {"camera_inf", "scene", "camera 0 1 inf  0 1 0  0 1 0  40\n",
+     "s.scene:1: camera eye: 'inf' is not finite"},
+    {"camera_fov", "scene", "camera 0 1 3  0 1 0  0 1 0  180\n",
+     "s.scene:1: camera field of view must be in (0, 180) degrees"},
+    {"camera_coincide", "scene", "camera 0 1 0  0 1 0  0 1 0  40\n",
+     "s.scene:1: camera eye and target coincide"},
+    {"camera_up", "scene", "camera 0 1 3  0 1 0  0 0 1  40\n",
+     "s.scene:1: camera up is zero or parallel"},
+    {"no_camera", "scene", "film 8 8\nmesh m.obj\n", "s.scene: no 'camera' line"},
+    {"no_mesh", "scene", "camera 0 1 3  0 1 0  0 1 0  40\n", "s.scene: no 'mesh' line"},
+    {"missing_mesh", "scene", "camera 0 1 3  0 1 0  0 1 0  40\nmesh nope.obj\n",
+     "s.scene:2: cannot open mesh file"},
+    {"obj_directive", "obj", "mtllib m.mtl\nv 0 0 0\nv 1 0 0\nl 1 2\n",
+     "m.obj:4: unsupported OBJ directive 'l'"},
+    {"obj_index", "obj", "mtllib m.mtl\nv 0 0 0\nusemtl white\nf 1 2 3\n",
+     "m.obj:4: face refers to vertex 2 but 1 are defined"},
+    {"obj_no_material", "obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n",
+     "m.obj:4: face without a material"},
+    {"obj_unknown_material", "obj", "mtllib m.mtl\nusemtl chrome\n",
+     "m.obj:2: material 'chrome' is not defined"},
+    {"obj_nan_vertex", "obj", "v 0 nan 0\n", "m.obj:1: vertex coordinate: 'nan' is not finite"},
+    {"obj_short_face", "obj", "mtllib m.mtl\nv 0 0 0\nv 1 0 0\nusemtl white\nf 1 2\n",
+     "m.obj:5: a face needs at least 3 vertices"},
+    {"obj_missing_mtl", "obj", "mtllib other.mtl\n", "m.obj:1: cannot open material file"},
+    {"mtl_texture", "mtl", "newmtl white\nmap_Kd wood.png\n",
+     "m.mtl:2: unsupported material directive 'map_Kd'"},
+    {"mtl_illum", "mtl", "newmtl white\nillum 4\n", "m.mtl:2: material 'white': illum 4 is not"},
+    {"mtl_glass_no_ni", "mtl", "newmtl white\nillum 7\n",
+     "m.mtl:2: material 'white': a dielectric (illum 7) needs Ni > 0"},
+    {"mtl_mirror_no_ks", "mtl", "newmtl white\nillum 5\n",
+     "m.mtl:2: material 'white': a mirror (illum 5) needs Ks"},
+    {"mtl_glossy", "mtl", "newmtl white\nKs 0.5 0.5 0.5\nillum 2\n",
+     "m.mtl:3: material 'white': illum 2 with non-zero Ks"},
+    {"mtl_albedo_range", "mtl", "newmtl white\nKd 1.5 0 0\n", "m.mtl:2: 'Kd' values must be in"},
+    {"mtl_negative_emission", "mtl", "newmtl white\nKe -1 0 0\n",
+     "m.mtl:2: 'Ke' values must be in"},
+    {"mtl_transparency", "mtl", "newmtl white\nd 0.5\n", "m.mtl:2: partial transparency"},
+    {"mtl_before_newmtl", "mtl", "Kd 1 1 1\n", "m.mtl:1: 'Kd' before any 'newmtl'"},
+    {"mtl_duplicate", "mtl", "newmtl white\nnewmtl white\n",
+     "m.mtl:2: material 'white' is defined twice"},
+};
+
+} // namespace
+
+TEST(SceneParse, ValidSceneLoads) {
+    EXPECT_EQ(load_error(Files(), "valid"), "");
+    Scene s = test::scene("cornell-water", 16, 16);
+    EXPECT_GT(s.triangles.size(), 1000u);
+    EXPECT_EQ(s.depth, 24);
+}
+
+class SceneErrors : public ::testing::TestWithParam<Case> {};
+
+TEST_P(SceneErrors, GiveTheirOwnMessage) {
+    const Case& c = GetParam();
+    Files f;
+    if (std::string(c.file) == "scene") f.scene = c.text;
+    if (std::string(c.file) == "obj") f.obj = c.text;
+    if (std::string(c.file) == "mtl") f.mtl = c.text;
+    std::string msg = load_error(f, c.name);
+    EXPECT_EQ(msg.rfind(c.expected, 0), 0u) << "got: " << msg;
+}
+
+INSTANTIATE_TEST_SUITE_P(All, SceneErrors, ::testing::ValuesIn(kCases),
+                         [](const auto& info) { return std::string(info.param.name); });

@@ -1,0 +1,50 @@
+// Helpers shared by the tests: one OpenCL context per test binary, scene
+// loading with overrides, and small statistics.
+#pragma once
+#include "device_scene.hpp"
+#include "image.hpp"
+#include "ocl.hpp"
+#include "path_tracer.hpp"
+#include "scene.hpp"
+
+#include <cstdio>
+#include <fstream>
+#include <string>
+
+namespace smallmlt::test {
+
+// Device 0, created once (kernel builds are cached per source by PoCL).
+inline const ClContext& cl() {
+    static ClContext ctx(0);
+    return ctx;
+}
+
+// A scene from scenes/ (tests run from the repository root).
+inline Scene scene(const std::string& name, int width, int height, int depth = -1) {
+    Scene s = load_scene("scenes/" + name + ".scene");
+    s.width = width;
+    s.height = height;
+    if (depth >= 0) s.depth = depth;
+    return s;
+}
+
+// Path-traced image of `ds` at `spp` samples per pixel.
+inline Image render_pt(const DeviceScene& ds, std::uint64_t seed, std::uint32_t spp) {
+    PathTracer pt(cl(), ds, seed);
+    pt.add_samples(spp);
+    return pt.image();
+}
+
+// A scratch directory under build/, emptied per call site.
+inline std::string scratch_dir(const std::string& name) {
+    std::string dir = "build/test-scratch/" + name;
+    std::string cmd = "rm -rf '" + dir + "' && mkdir -p '" + dir + "'";
+    if (std::system(cmd.c_str()) != 0) throw std::runtime_error("cannot make " + dir);
+    return dir;
+}
+
+inline void write_file(const std::string& path, const std::string& text) {
+    std::ofstream(path) << text;
+}
+
+} // namespace smallmlt::test
