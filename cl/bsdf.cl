@@ -11,11 +11,12 @@ typedef struct {
 /* Cosine-weighted direction around n from two numbers in [0,1). */
 inline float3 bsdf_cosine_dir(float3 n, float u1, float u2) {
     float r = sqrt(u1);
-    float phi = 2.0f * M_PI_F * u2;
+    float cos_phi;
+    float sin_phi = sincos(2.0f * M_PI_F * u2, &cos_phi);
     float3 t = fabs(n.x) > 0.5f ? (float3)(n.z, 0.0f, -n.x) : (float3)(0.0f, -n.z, n.y);
     t = normalize(t);
     float3 b = cross(n, t);
-    return normalize(t * (r * cos(phi)) + b * (r * sin(phi)) + n * sqrt(fmax(0.0f, 1.0f - u1)));
+    return normalize(t * (r * cos_phi) + b * (r * sin_phi) + n * sqrt(fmax(0.0f, 1.0f - u1)));
 }
 
 inline float3 bsdf_reflect(float3 wo, float3 n) { return 2.0f * dot(wo, n) * n - wo; }

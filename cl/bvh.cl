@@ -4,15 +4,23 @@
 
 #define BVH_STACK_SIZE 64
 
+/* Plain comparisons compile to single min/max instructions; fmin/fmax add
+ * NaN handling that does not help here: a NaN slab (0 * inf, a ray lying
+ * exactly in a box face's plane) is a measure-zero case either way. */
+inline float3 bvh_min3(float3 a, float3 b) { return select(b, a, a < b); }
+inline float3 bvh_max3(float3 a, float3 b) { return select(b, a, a > b); }
+inline float bvh_min(float a, float b) { return a < b ? a : b; }
+inline float bvh_max(float a, float b) { return a > b ? a : b; }
+
 /* Entry distance of the ray into a node's box, or INFINITY if it misses or
  * enters beyond tmax. */
 inline float bvh_box_entry(const __global BvhNode* n, float3 o, float3 inv_d, float tmax) {
     float3 t0 = (geo_load3(n->lo) - o) * inv_d;
     float3 t1 = (geo_load3(n->hi) - o) * inv_d;
-    float3 tn = fmin(t0, t1);
-    float3 tf = fmax(t0, t1);
-    float enter = fmax(fmax(tn.x, tn.y), fmax(tn.z, 0.0f));
-    float leave = fmin(fmin(tf.x, tf.y), fmin(tf.z, tmax));
+    float3 tn = bvh_min3(t0, t1);
+    float3 tf = bvh_max3(t0, t1);
+    float enter = bvh_max(bvh_max(tn.x, tn.y), bvh_max(tn.z, 0.0f));
+    float leave = bvh_min(bvh_min(tf.x, tf.y), bvh_min(tf.z, tmax));
     return enter <= leave ? enter : INFINITY;
 }
 
