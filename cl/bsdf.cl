@@ -19,7 +19,9 @@ inline float3 bsdf_cosine_dir(float3 n, float u1, float u2) {
     return normalize(t * (r * cos_phi) + b * (r * sin_phi) + n * sqrt(fmax(0.0f, 1.0f - u1)));
 }
 
-inline float3 bsdf_reflect(float3 wo, float3 n) { return 2.0f * dot(wo, n) * n - wo; }
+inline float3 bsdf_reflect(float3 wo, float3 n) {
+    return 2.0f * dot(wo, n) * n - wo;
+}
 
 /* Unpolarized Fresnel reflectance; cos_i >= 0 on the incident side,
  * eta = eta_incident / eta_transmitted. Sets *cos_t for refraction. */

@@ -7,10 +7,18 @@
 /* Plain comparisons compile to single min/max instructions; fmin/fmax add
  * NaN handling that does not help here: a NaN slab (0 * inf, a ray lying
  * exactly in a box face's plane) is a measure-zero case either way. */
-inline float3 bvh_min3(float3 a, float3 b) { return select(b, a, a < b); }
-inline float3 bvh_max3(float3 a, float3 b) { return select(b, a, a > b); }
-inline float bvh_min(float a, float b) { return a < b ? a : b; }
-inline float bvh_max(float a, float b) { return a > b ? a : b; }
+inline float3 bvh_min3(float3 a, float3 b) {
+    return select(b, a, a < b);
+}
+inline float3 bvh_max3(float3 a, float3 b) {
+    return select(b, a, a > b);
+}
+inline float bvh_min(float a, float b) {
+    return a < b ? a : b;
+}
+inline float bvh_max(float a, float b) {
+    return a > b ? a : b;
+}
 
 /* Entry distance of the ray into a node's box, or INFINITY if it misses or
  * enters beyond tmax. */

@@ -12,13 +12,17 @@ typedef struct {
     uint tri;
 } Hit;
 
-inline float3 geo_load3(const __global f32* v) { return (float3)(v[0], v[1], v[2]); }
+inline float3 geo_load3(const __global f32* v) {
+    return (float3)(v[0], v[1], v[2]);
+}
 
 inline float3 geo_tri_normal(const __global Triangle* t) {
     return cross(geo_load3(t->e1), geo_load3(t->e2));
 }
 
-inline float geo_tri_area(const __global Triangle* t) { return 0.5f * length(geo_tri_normal(t)); }
+inline float geo_tri_area(const __global Triangle* t) {
+    return 0.5f * length(geo_tri_normal(t));
+}
 
 /* Distance along the ray to triangle t if it lies in (0, ray->tmax), else -1. */
 inline float geo_intersect(const Ray* ray, const __global Triangle* t) {

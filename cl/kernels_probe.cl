@@ -1,7 +1,7 @@
 /* Probe kernels for tests: they report what the device sees, so the host
  * can check it agrees (struct layout, BVH traversal). */
 
-#define PROBE_OFFSET(T, field) ((uint)((size_t)&((T*)0)->field))
+#define PROBE_OFFSET(T, field) ((uint)((size_t) & ((T*)0)->field))
 
 /* Writes sizeof and field offsets of every shared struct, in the order that
  * src/shared_layout.cpp expects. */
@@ -38,8 +38,8 @@ __kernel void probe_layout(__global uint* out) {
 /* Closest hit of each ray (origin xyz, tmax in o; direction in d):
  * (triangle index or 0xFFFFFFFF, distance bits). */
 __kernel void probe_closest(__global const Triangle* tris, __global const BvhNode* nodes,
-                            __global const float4* o, __global const float4* d,
-                            __global uint2* out, const uint n) {
+                            __global const float4* o, __global const float4* d, __global uint2* out,
+                            const uint n) {
     uint i = get_global_id(0);
     if (i >= n) return;
     Ray r;

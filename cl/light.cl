@@ -3,9 +3,9 @@
  * exactly Triangle.light_pick_prob), then a point uniformly on it. */
 
 typedef struct {
-    float3 wi;      /* unit direction from the shading point to the light */
-    float dist;     /* distance to the light point */
-    float pdf_w;    /* solid-angle density of wi under light sampling */
+    float3 wi;   /* unit direction from the shading point to the light */
+    float dist;  /* distance to the light point */
+    float pdf_w; /* solid-angle density of wi under light sampling */
     float3 radiance;
 } LightSample;
 
@@ -13,8 +13,10 @@ inline uint light_pick(const __global LightEntry* lights, uint num_lights, uint 
     uint lo = 0, hi = num_lights - 1u;
     while (lo < hi) {
         uint mid = (lo + hi) >> 1;
-        if (u < lights[mid].cdf_hi) hi = mid;
-        else lo = mid + 1u;
+        if (u < lights[mid].cdf_hi)
+            hi = mid;
+        else
+            lo = mid + 1u;
     }
     return lo;
 }
@@ -29,8 +31,8 @@ inline float light_pdf_w(const __global Triangle* t, float dist, float cos_l) {
 inline bool light_sample_tri(const __global Triangle* t, const __global Material* mats, float3 x,
                              float u1, float u2, LightSample* ls) {
     float su = sqrt(u1);
-    float3 p = geo_load3(t->v0) + geo_load3(t->e1) * (su * (1.0f - u2)) +
-               geo_load3(t->e2) * (su * u2);
+    float3 p =
+        geo_load3(t->v0) + geo_load3(t->e1) * (su * (1.0f - u2)) + geo_load3(t->e2) * (su * u2);
     float3 nl = normalize(geo_tri_normal(t));
     float3 d = p - x;
     float dist = length(d);

@@ -19,9 +19,13 @@ typedef struct {
     uint rays;       /* rays traced: closest-hit and shadow */
 } PathResult;
 
-inline float3 path_rgb(const f32 c[3]) { return (float3)(c[0], c[1], c[2]); }
+inline float3 path_rgb(const f32 c[3]) {
+    return (float3)(c[0], c[1], c[2]);
+}
 
-inline float path_max3(float3 v) { return fmax(v.x, fmax(v.y, v.z)); }
+inline float path_max3(float3 v) {
+    return fmax(v.x, fmax(v.y, v.z));
+}
 
 /* Direct light at a diffuse vertex x with normal n_wo (facing the viewer). */
 float3 path_next_event(const SceneView* sc, SampleSource* src, uint bounce, float3 x, float3 n_wo,
@@ -60,8 +64,8 @@ BsdfSample path_scatter(SampleSource* src, uint bounce, const Material* m, float
                         float3 n_wo) {
 #if LAYOUT_HAS_DIELECTRIC
     if (m->type == MAT_DIELECTRIC)
-        return bsdf_sample_dielectric(
-            m, wo, n, smp_draw(src, layout_dim(bounce, SLOT_FRESNEL), 16u), 16u);
+        return bsdf_sample_dielectric(m, wo, n,
+                                      smp_draw(src, layout_dim(bounce, SLOT_FRESNEL), 16u), 16u);
 #endif
 #if LAYOUT_HAS_MIRROR
     if (m->type == MAT_MIRROR) return bsdf_sample_mirror(m, wo, n_wo);
@@ -130,7 +134,9 @@ PathResult path_trace(const SceneView* sc, SampleSource* src, Ray ray) {
 }
 
 /* Luminance (Rec. 709 weights): the MLT target function I = lum(F). */
-inline float path_luminance(float3 c) { return 0.2126f * c.x + 0.7152f * c.y + 0.0722f * c.z; }
+inline float path_luminance(float3 c) {
+    return 0.2126f * c.x + 0.7152f * c.y + 0.0722f * c.z;
+}
 
 inline SceneView path_scene(const __global Triangle* tris, const __global BvhNode* nodes,
                             const __global Material* mats, const __global LightEntry* lights,

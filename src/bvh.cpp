@@ -55,7 +55,8 @@ struct Builder {
     std::uint32_t split(std::uint32_t begin, std::uint32_t end, const Box& box) {
         std::uint32_t count = end - begin;
         Box cbox;
-        for (std::uint32_t i = begin; i < end; ++i) cbox.grow(centroids[out.order[i]]);
+        for (std::uint32_t i = begin; i < end; ++i)
+            cbox.grow(centroids[out.order[i]]);
         float best_cost = std::numeric_limits<float>::max();
         int best_axis = -1, best_bin = 0;
         for (int axis = 0; axis < 3; ++axis) {
@@ -65,7 +66,8 @@ struct Builder {
             std::uint32_t counts[kBins] = {};
             for (std::uint32_t i = begin; i < end; ++i) {
                 std::uint32_t t = out.order[i];
-                int b = std::min(kBins - 1, static_cast<int>((centroids[t][axis] - lo) / ext * kBins));
+                int b =
+                    std::min(kBins - 1, static_cast<int>((centroids[t][axis] - lo) / ext * kBins));
                 bins[b].grow(boxes[t]);
                 ++counts[b];
             }
@@ -94,20 +96,20 @@ struct Builder {
         if (best_axis < 0) return count <= kLeafForced ? begin : begin + count / 2;
         if (split_cost >= leaf_cost && count <= kLeafForced) return begin;
         float lo = cbox.lo[best_axis], ext = cbox.hi[best_axis] - lo;
-        auto mid = std::partition(out.order.begin() + begin, out.order.begin() + end,
-                                  [&](std::uint32_t t) {
-                                      int b = std::min(kBins - 1,
-                                                       static_cast<int>((centroids[t][best_axis] - lo) /
-                                                                        ext * kBins));
-                                      return b <= best_bin;
-                                  });
+        auto mid = std::partition(
+            out.order.begin() + begin, out.order.begin() + end, [&](std::uint32_t t) {
+                int b = std::min(kBins - 1,
+                                 static_cast<int>((centroids[t][best_axis] - lo) / ext * kBins));
+                return b <= best_bin;
+            });
         return static_cast<std::uint32_t>(mid - out.order.begin());
     }
 
     void build(std::uint32_t begin, std::uint32_t end, int depth) {
         out.depth = std::max(out.depth, depth);
         Box box;
-        for (std::uint32_t i = begin; i < end; ++i) box.grow(boxes[out.order[i]]);
+        for (std::uint32_t i = begin; i < end; ++i)
+            box.grow(boxes[out.order[i]]);
         std::uint32_t count = end - begin;
         std::uint32_t mid = begin;
         if (count > kLeafMax && depth < kBvhMaxDepth) mid = split(begin, end, box);
@@ -130,7 +132,8 @@ Bvh bvh_build(const std::vector<SceneTriangle>& tris) {
     b.centroids.resize(tris.size());
     b.out.order.resize(tris.size());
     for (std::size_t i = 0; i < tris.size(); ++i) {
-        for (const Vec3& v : tris[i].v) b.boxes[i].grow(v);
+        for (const Vec3& v : tris[i].v)
+            b.boxes[i].grow(v);
         b.centroids[i] = (tris[i].v[0] + tris[i].v[1] + tris[i].v[2]) * (1.0f / 3.0f);
         b.out.order[i] = static_cast<std::uint32_t>(i);
     }

@@ -12,7 +12,9 @@ void store3(f32 out[3], Vec3 v) {
     out[2] = v.z;
 }
 
-float luminance(const f32 c[3]) { return 0.2126f * c[0] + 0.7152f * c[1] + 0.0722f * c[2]; }
+float luminance(const f32 c[3]) {
+    return 0.2126f * c[0] + 0.7152f * c[1] + 0.0722f * c[2];
+}
 
 // Light table: emitters picked in proportion to power (area x luminance of
 // Ke) through an integer CDF over 2^bits grid points, each light getting at

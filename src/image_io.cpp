@@ -34,7 +34,8 @@ unsigned char to_srgb8(float v) {
 
 bool write_png(const Image& img, const std::string& path) {
     std::vector<unsigned char> px(img.rgb.size());
-    for (std::size_t i = 0; i < px.size(); ++i) px[i] = to_srgb8(img.rgb[i]);
+    for (std::size_t i = 0; i < px.size(); ++i)
+        px[i] = to_srgb8(img.rgb[i]);
     return stbi_write_png(path.c_str(), img.width, img.height, 3, px.data(), img.width * 3) != 0;
 }
 
@@ -116,7 +117,8 @@ Image read_exr(const std::string& path) {
     }
     Image img(w, h);
     for (std::size_t i = 0; i < std::size_t(w) * h; ++i)
-        for (int c = 0; c < 3; ++c) img.rgb[3 * i + c] = data[4 * i + c];
+        for (int c = 0; c < 3; ++c)
+            img.rgb[3 * i + c] = data[4 * i + c];
     std::free(data);
     return img;
 }

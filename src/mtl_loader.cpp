@@ -4,7 +4,6 @@
 #include "scene.hpp"
 #include "text_parse.hpp"
 
-#include <fstream>
 
 namespace smallmlt {
 
@@ -21,8 +20,7 @@ struct PendingMaterial {
 
 void read_rgb(const std::vector<std::string>& t, const std::string& file, int line, float lo,
               float hi, float out[3]) {
-    if (t.size() != 4)
-        throw input_error(file, line, "'" + t[0] + "' takes three numbers (R G B)");
+    if (t.size() != 4) throw input_error(file, line, "'" + t[0] + "' takes three numbers (R G B)");
     for (int i = 0; i < 3; ++i) {
         out[i] = parse_float(t[1 + i], file, line, t[0].c_str());
         if (out[i] < lo || out[i] > hi)
@@ -88,14 +86,9 @@ void add_material(Scene& scene, const PendingMaterial& p, const std::string& fil
 } // namespace
 
 void load_mtl(const std::string& path, Scene& scene) {
-    std::ifstream in(path);
-    if (!in) throw InputError(path + ": cannot open material file");
     PendingMaterial cur;
     bool open = false;
-    std::string text;
-    for (int line = 1; std::getline(in, text); ++line) {
-        std::vector<std::string> t = split_tokens(text);
-        if (t.empty()) continue;
+    for_each_directive(path, "material", [&](int line, const std::vector<std::string>& t) {
         const std::string& d = t[0];
         if (d == "newmtl") {
             if (t.size() != 2) throw input_error(path, line, "'newmtl' takes one name");
@@ -104,7 +97,7 @@ void load_mtl(const std::string& path, Scene& scene) {
             cur.name = t[1];
             cur.line = cur.illum_line = line;
             open = true;
-            continue;
+            return;
         }
         if (!open) throw input_error(path, line, "'" + d + "' before any 'newmtl'");
         if (d == "Kd") {
@@ -126,7 +119,8 @@ void load_mtl(const std::string& path, Scene& scene) {
             // Ambient colour and Phong exponent: no meaning for the supported
             // materials; read for their syntax and ignored (documented).
             if (t.size() < 2) throw input_error(path, line, "'" + d + "' takes a value");
-            for (std::size_t i = 1; i < t.size(); ++i) parse_float(t[i], path, line, d.c_str());
+            for (std::size_t i = 1; i < t.size(); ++i)
+                parse_float(t[i], path, line, d.c_str());
         } else if (d == "d" || d == "Tr") {
             if (t.size() != 2) throw input_error(path, line, "'" + d + "' takes one number");
             float v = parse_float(t[1], path, line, d.c_str());
@@ -137,8 +131,7 @@ void load_mtl(const std::string& path, Scene& scene) {
         } else {
             throw input_error(path, line, "unsupported material directive '" + d + "'");
         }
-    }
-    if (in.bad()) throw InputError(path + ": read error");
+    });
     if (open) add_material(scene, cur, path);
 }
 

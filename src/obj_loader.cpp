@@ -26,23 +26,20 @@ long face_vertex(const std::string& ref, const std::string& file, int line) {
 
 // Checks the OBJ line by line and loads the MTL files it names.
 void check_obj(const std::string& path, Scene& scene) {
-    std::ifstream in(path);
-    if (!in) throw InputError(path + ": cannot open mesh file");
     long vertices = 0;
     bool has_material = false;
-    std::string text;
-    for (int line = 1; std::getline(in, text); ++line) {
-        std::vector<std::string> t = split_tokens(text);
-        if (t.empty()) continue;
+    for_each_directive(path, "mesh", [&](int line, const std::vector<std::string>& t) {
         const std::string& d = t[0];
         if (d == "v") {
             if (t.size() != 4 && t.size() != 5)
                 throw input_error(path, line, "'v' takes 3 coordinates");
-            for (int i = 1; i <= 3; ++i) parse_float(t[i], path, line, "vertex coordinate");
+            for (int i = 1; i <= 3; ++i)
+                parse_float(t[i], path, line, "vertex coordinate");
             ++vertices;
         } else if (d == "vn" || d == "vt") {
             // Read and ignored: shading uses geometric normals, no textures.
-            for (std::size_t i = 1; i < t.size(); ++i) parse_float(t[i], path, line, d.c_str());
+            for (std::size_t i = 1; i < t.size(); ++i)
+                parse_float(t[i], path, line, d.c_str());
         } else if (d == "f") {
             if (t.size() < 4) throw input_error(path, line, "a face needs at least 3 vertices");
             if (!has_material)
@@ -57,7 +54,8 @@ void check_obj(const std::string& path, Scene& scene) {
         } else if (d == "usemtl") {
             if (t.size() != 2) throw input_error(path, line, "'usemtl' takes one name");
             if (material_index(scene, t[1]) < 0)
-                throw input_error(path, line, "material '" + t[1] + "' is not defined in any mtllib");
+                throw input_error(path, line,
+                                  "material '" + t[1] + "' is not defined in any mtllib");
             has_material = true;
         } else if (d == "mtllib") {
             if (t.size() < 2) throw input_error(path, line, "'mtllib' takes a file name");
@@ -73,8 +71,7 @@ void check_obj(const std::string& path, Scene& scene) {
         } else {
             throw input_error(path, line, "unsupported OBJ directive '" + d + "'");
         }
-    }
-    if (in.bad()) throw InputError(path + ": read error");
+    });
 }
 
 } // namespace

@@ -82,8 +82,8 @@ const char* cl_error_name(cl_int err) {
 void cl_check(cl_int err, const char* what, const char* file, int line) {
     if (err == CL_SUCCESS) return;
     std::ostringstream msg;
-    msg << file << ":" << line << ": " << what << " failed: " << cl_error_name(err) << " ("
-        << err << ")";
+    msg << file << ":" << line << ": " << what << " failed: " << cl_error_name(err) << " (" << err
+        << ")";
     throw InputError(msg.str());
 }
 
@@ -94,7 +94,8 @@ std::string device_string(cl_device_id d, cl_device_info what) {
     CL_CHECK(clGetDeviceInfo(d, what, 0, nullptr, &n));
     std::string s(n, '\0');
     CL_CHECK(clGetDeviceInfo(d, what, n, s.data(), nullptr));
-    while (!s.empty() && (s.back() == '\0' || s.back() == ' ')) s.pop_back();
+    while (!s.empty() && (s.back() == '\0' || s.back() == ' '))
+        s.pop_back();
     return s;
 }
 
@@ -124,7 +125,8 @@ std::vector<DeviceInfo> cl_list_devices() {
         CL_CHECK(clGetPlatformInfo(p, CL_PLATFORM_NAME, 0, nullptr, &pn));
         std::string pname(pn, '\0');
         CL_CHECK(clGetPlatformInfo(p, CL_PLATFORM_NAME, pn, pname.data(), nullptr));
-        while (!pname.empty() && pname.back() == '\0') pname.pop_back();
+        while (!pname.empty() && pname.back() == '\0')
+            pname.pop_back();
         for (cl_device_id d : devs) {
             DeviceInfo info;
             info.platform = p;
@@ -182,8 +184,8 @@ cl_program ClContext::build(const std::vector<std::string>& files,
         std::string log(n, '\0');
         clGetProgramBuildInfo(prog, info_.id, CL_PROGRAM_BUILD_LOG, n, log.data(), nullptr);
         clReleaseProgram(prog);
-        throw InputError(std::string("kernel build failed (") + cl_error_name(err) +
-                         ") on " + info_.name + ":\n" + log);
+        throw InputError(std::string("kernel build failed (") + cl_error_name(err) + ") on " +
+                         info_.name + ":\n" + log);
     }
     return prog;
 }
@@ -202,7 +204,9 @@ ClBuffer::~ClBuffer() {
     if (mem_) clReleaseMemObject(mem_);
 }
 
-ClBuffer::ClBuffer(ClBuffer&& o) noexcept : mem_(o.mem_), bytes_(o.bytes_) { o.mem_ = nullptr; }
+ClBuffer::ClBuffer(ClBuffer&& o) noexcept : mem_(o.mem_), bytes_(o.bytes_) {
+    o.mem_ = nullptr;
+}
 
 ClBuffer& ClBuffer::operator=(ClBuffer&& o) noexcept {
     if (this != &o) {
@@ -216,7 +220,8 @@ ClBuffer& ClBuffer::operator=(ClBuffer&& o) noexcept {
 
 void ClBuffer::read(const ClContext& cl, void* dst) const {
     if (bytes_)
-        CL_CHECK(clEnqueueReadBuffer(cl.queue(), mem_, CL_TRUE, 0, bytes_, dst, 0, nullptr, nullptr));
+        CL_CHECK(
+            clEnqueueReadBuffer(cl.queue(), mem_, CL_TRUE, 0, bytes_, dst, 0, nullptr, nullptr));
 }
 
 void ClBuffer::write(const ClContext& cl, const void* src) const {
@@ -228,8 +233,8 @@ void ClBuffer::write(const ClContext& cl, const void* src) const {
 void ClBuffer::fill_zero(const ClContext& cl) const {
     if (!bytes_) return;
     const cl_uint zero = 0;
-    CL_CHECK(clEnqueueFillBuffer(cl.queue(), mem_, &zero, sizeof(zero), 0, bytes_, 0, nullptr,
-                                 nullptr));
+    CL_CHECK(
+        clEnqueueFillBuffer(cl.queue(), mem_, &zero, sizeof(zero), 0, bytes_, 0, nullptr, nullptr));
 }
 
 ClKernel::ClKernel(cl_program program, const char* name) : name_(name) {

@@ -57,7 +57,8 @@ class ClContext {
 class ClBuffer {
   public:
     ClBuffer() = default;
-    ClBuffer(const ClContext& cl, cl_mem_flags flags, std::size_t bytes, const void* host = nullptr);
+    ClBuffer(const ClContext& cl, cl_mem_flags flags, std::size_t bytes,
+             const void* host = nullptr);
     ~ClBuffer();
     ClBuffer(ClBuffer&& o) noexcept;
     ClBuffer& operator=(ClBuffer&& o) noexcept;

@@ -4,8 +4,8 @@ namespace smallmlt {
 
 const std::vector<std::string>& pt_program_files() {
     static const std::vector<std::string> files = {
-        "cl/shared_types.h", "cl/rng.cl",  "cl/layout.cl", "cl/sample_omc.cl",
-        "cl/geometry.cl",    "cl/bvh.cl",  "cl/bsdf.cl",   "cl/light.cl",
+        "cl/shared_types.h", "cl/rng.cl",    "cl/layout.cl",    "cl/sample_omc.cl",
+        "cl/geometry.cl",    "cl/bvh.cl",    "cl/bsdf.cl",      "cl/light.cl",
         "cl/path.cl",        "cl/camera.cl", "cl/kernels_pt.cl"};
     return files;
 }
@@ -42,7 +42,8 @@ std::uint64_t PathTracer::rays() const {
     std::vector<cl_ulong> counts(pixels());
     ray_count_.read(cl_, counts.data());
     std::uint64_t sum = 0;
-    for (cl_ulong c : counts) sum += c;
+    for (cl_ulong c : counts)
+        sum += c;
     return sum;
 }
 
@@ -57,7 +58,8 @@ Image PathTracer::image() const {
     Image img(int(ds_.frame.width), int(ds_.frame.height));
     float inv = spp_ ? 1.0f / float(spp_) : 0.0f;
     for (std::size_t p = 0; p < pixels(); ++p)
-        for (int c = 0; c < 3; ++c) img.rgb[3 * p + c] = acc[4 * p + c] * inv;
+        for (int c = 0; c < 3; ++c)
+            img.rgb[3 * p + c] = acc[4 * p + c] * inv;
     return img;
 }
 
@@ -69,7 +71,8 @@ Image PathTracer::luminance_variance() const {
     for (std::size_t p = 0; p < pixels(); ++p) {
         double mean = (0.2126 * acc[4 * p] + 0.7152 * acc[4 * p + 1] + 0.0722 * acc[4 * p + 2]) / n;
         double var = (acc[4 * p + 3] / n - mean * mean) * n / (n - 1);
-        for (int c = 0; c < 3; ++c) img.rgb[3 * p + c] = float(var > 0 ? var : 0);
+        for (int c = 0; c < 3; ++c)
+            img.rgb[3 * p + c] = float(var > 0 ? var : 0);
     }
     return img;
 }

@@ -23,7 +23,7 @@ class PathTracer {
     std::uint64_t rays() const;
     std::uint64_t pixels() const { return std::uint64_t(ds_.frame.width) * ds_.frame.height; }
 
-    Image image() const;            // mean radiance per pixel
+    Image image() const;              // mean radiance per pixel
     Image luminance_variance() const; // per-pixel sample variance of luminance (in all channels)
 
   private:

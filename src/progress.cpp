@@ -8,7 +8,9 @@ namespace smallmlt {
 
 Progress::Progress(bool enabled) : enabled_(enabled && isatty(STDERR_FILENO)) {}
 
-Progress::~Progress() { finish(); }
+Progress::~Progress() {
+    finish();
+}
 
 void Progress::update(double fraction, const std::string& detail) {
     if (!enabled_) return;

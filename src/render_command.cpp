@@ -26,7 +26,8 @@ void check_output_dirs(const std::vector<std::string>& outs) {
         std::size_t slash = f.find_last_of('/');
         std::string dir = slash == std::string::npos ? "." : f.substr(0, slash + 1);
         if (access(dir.c_str(), W_OK) != 0)
-            throw UsageError("--out " + f + ": directory " + dir + " does not exist or is not writable");
+            throw UsageError("--out " + f + ": directory " + dir +
+                             " does not exist or is not writable");
     }
 }
 
@@ -66,14 +67,16 @@ int run_render(const RenderOptions& o) {
         double pass_s = std::max(seconds_since(tp), 1e-4);
         double per_sample = pass_s / n;
         double next = kPassSeconds / per_sample;
-        if (o.time_s) next = std::min(next, std::max(1.0, (*o.time_s - seconds_since(t0)) / per_sample));
+        if (o.time_s)
+            next = std::min(next, std::max(1.0, (*o.time_s - seconds_since(t0)) / per_sample));
         batch = std::uint32_t(std::clamp(next, 1.0, 4096.0));
     }
     double render_s = seconds_since(t0);
     progress.finish();
 
     Image img = pt.image();
-    for (const std::string& f : o.outs) write_image(img, f);
+    for (const std::string& f : o.outs)
+        write_image(img, f);
     if (!o.quiet) {
         double paths = double(pt.spp()) * double(pt.pixels());
         std::printf("%s: %dx%d, %u spp, depth %d: %.2f s (+%.2f s setup), %.3f M paths/s, "

@@ -12,7 +12,8 @@ const char* slot_name(Slot s) {
 
 int light_pick_bits(std::uint32_t num_lights) {
     int bits = 8;
-    while (bits < kMaxLightPickBits && (std::uint64_t(1) << (bits - 8)) < num_lights) ++bits;
+    while (bits < kMaxLightPickBits && (std::uint64_t(1) << (bits - 8)) < num_lights)
+        ++bits;
     return bits < kLowBits ? kLowBits : bits;
 }
 
@@ -24,8 +25,9 @@ SampleLayout make_layout(const SceneFeatures& f) {
     want[kLightPick] = nee && f.num_lights > 1;
     want[kFresnel] = f.dielectric;
     want[kRoulette] = f.depth > kRouletteStart;
-    int width[kSlotCount] = {kHighBits, kHighBits, kHighBits, kHighBits,
-                             light_pick_bits(f.num_lights), kLowBits, kLowBits};
+    int width[kSlotCount] = {
+        kHighBits, kHighBits, kHighBits, kHighBits, light_pick_bits(f.num_lights),
+        kLowBits,  kLowBits};
     SampleLayout l;
     l.depth = f.depth;
     l.features = f;

@@ -16,10 +16,10 @@ struct SceneFeatures {
 
 enum Slot : int { kBsdfU, kBsdfV, kLightU, kLightV, kLightPick, kFresnel, kRoulette, kSlotCount };
 
-constexpr int kHighBits = 24;       // continuous slots (BSDF and light sampling)
-constexpr int kLowBits = 16;        // discrete choices
-constexpr int kCameraDims = 2;      // film position, kHighBits each
-constexpr int kRouletteStart = 3;   // first bounce where Russian roulette may end a path
+constexpr int kHighBits = 24;     // continuous slots (BSDF and light sampling)
+constexpr int kLowBits = 16;      // discrete choices
+constexpr int kCameraDims = 2;    // film position, kHighBits each
+constexpr int kRouletteStart = 3; // first bounce where Russian roulette may end a path
 constexpr int kMaxLightPickBits = 24;
 
 struct SampleLayout {

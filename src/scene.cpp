@@ -18,8 +18,8 @@ void expect_args(const std::vector<std::string>& t, std::size_t n, const std::st
                           "'" + t[0] + "' takes " + std::to_string(n) + " value(s): " + usage);
 }
 
-Vec3 parse_vec(const std::vector<std::string>& t, std::size_t at, const std::string& file,
-               int line, const char* what) {
+Vec3 parse_vec(const std::vector<std::string>& t, std::size_t at, const std::string& file, int line,
+               const char* what) {
     return {parse_float(t[at], file, line, what), parse_float(t[at + 1], file, line, what),
             parse_float(t[at + 2], file, line, what)};
 }
@@ -42,16 +42,11 @@ void parse_camera(const std::vector<std::string>& t, const std::string& file, in
 } // namespace
 
 Scene load_scene(const std::string& path) {
-    std::ifstream in(path);
-    if (!in) throw InputError(path + ": cannot open scene file");
     Scene scene;
     scene.path = path;
     bool seen_film = false, seen_camera = false, seen_depth = false;
     int meshes = 0;
-    std::string text;
-    for (int line = 1; std::getline(in, text); ++line) {
-        std::vector<std::string> t = split_tokens(text);
-        if (t.empty()) continue;
+    for_each_directive(path, "scene", [&](int line, const std::vector<std::string>& t) {
         const std::string& d = t[0];
         if (d == "film") {
             if (seen_film) throw input_error(path, line, "'film' given twice");
@@ -74,8 +69,7 @@ Scene load_scene(const std::string& path) {
             expect_args(t, 1, path, line, "depth BOUNCES");
             long v = parse_int(t[1], path, line, "depth");
             if (v < 0 || v > kMaxDepth)
-                throw input_error(path, line,
-                                  "depth must be 0.." + std::to_string(kMaxDepth));
+                throw input_error(path, line, "depth must be 0.." + std::to_string(kMaxDepth));
             scene.depth = static_cast<int>(v);
             seen_depth = true;
         } else if (d == "mesh") {
@@ -88,8 +82,7 @@ Scene load_scene(const std::string& path) {
             throw input_error(path, line,
                               "unknown directive '" + d + "' (expected film, camera, depth, mesh)");
         }
-    }
-    if (in.bad()) throw InputError(path + ": read error");
+    });
     if (!seen_camera) throw InputError(path + ": no 'camera' line");
     if (meshes == 0) throw InputError(path + ": no 'mesh' line");
     if (scene.triangles.empty()) throw InputError(path + ": the scene has no triangles");

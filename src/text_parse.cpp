@@ -5,6 +5,7 @@
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
+#include <fstream>
 
 namespace smallmlt {
 
@@ -42,6 +43,18 @@ long parse_int(const std::string& tok, const std::string& file, int line, const 
     if (tok.empty() || *end != '\0' || errno == ERANGE)
         throw input_error(file, line, std::string(what) + ": '" + tok + "' is not an integer");
     return v;
+}
+
+void for_each_directive(const std::string& path, const char* kind,
+                        const std::function<void(int, const std::vector<std::string>&)>& fn) {
+    std::ifstream in(path);
+    if (!in) throw InputError(path + ": cannot open " + kind + " file");
+    std::string text;
+    for (int line = 1; std::getline(in, text); ++line) {
+        std::vector<std::string> t = split_tokens(text);
+        if (!t.empty()) fn(line, t);
+    }
+    if (in.bad()) throw InputError(path + ": read error");
 }
 
 std::string dir_of(const std::string& path) {

@@ -37,8 +37,10 @@ TEST(Bvh, EveryTriangleOnceAndChildrenInsideParents) {
     Scene s = test::scene("cornell-water", 8, 8);
     Bvh bvh = bvh_build(s.triangles);
     std::vector<int> seen(s.triangles.size(), 0);
-    for (std::uint32_t t : bvh.order) ++seen[t];
-    for (int c : seen) ASSERT_EQ(c, 1);
+    for (std::uint32_t t : bvh.order)
+        ++seen[t];
+    for (int c : seen)
+        ASSERT_EQ(c, 1);
     std::size_t leaf_tris = 0;
     for (std::size_t i = 0; i < bvh.nodes.size(); ++i) {
         const BvhNode& n = bvh.nodes[i];
@@ -78,9 +80,8 @@ TEST(Bvh, DeviceClosestHitsMatchBruteForce) {
                  i % 4 == 0 ? 0.8f : std::numeric_limits<float>::infinity()}};
         d[i] = {{dir[0] * inv, dir[1] * inv, dir[2] * inv, 0}};
     }
-    ClProgram prog(test::cl().build({"cl/shared_types.h", "cl/geometry.cl", "cl/bvh.cl",
-                                     "cl/kernels_probe.cl"},
-                                    ""));
+    ClProgram prog(test::cl().build(
+        {"cl/shared_types.h", "cl/geometry.cl", "cl/bvh.cl", "cl/kernels_probe.cl"}, ""));
     ClKernel k(prog.p, "probe_closest");
     ClBuffer tris(test::cl(), CL_MEM_READ_ONLY, ds.tris.size() * sizeof(Triangle), ds.tris.data());
     ClBuffer nodes(test::cl(), CL_MEM_READ_ONLY, ds.nodes.size() * sizeof(BvhNode),
@@ -97,7 +98,8 @@ TEST(Bvh, DeviceClosestHitsMatchBruteForce) {
     for (std::size_t i = 0; i < n; ++i) {
         double od[3] = {o[i].s[0], o[i].s[1], o[i].s[2]}, dd[3] = {d[i].s[0], d[i].s[1], d[i].s[2]};
         double best = INFINITY;
-        for (const Triangle& t : ds.tris) best = std::min(best, brute_hit(t, od, dd));
+        for (const Triangle& t : ds.tris)
+            best = std::min(best, brute_hit(t, od, dd));
         if (!(best < o[i].s[3])) best = INFINITY;
         bool dev_hit = hits[i].s[0] != 0xFFFFFFFFu;
         float dev_t;

@@ -13,7 +13,8 @@ namespace {
 
 Image ramp() {
     Image img(5, 3);
-    for (std::size_t i = 0; i < img.rgb.size(); ++i) img.rgb[i] = 0.1f * float(i) + 1e-3f;
+    for (std::size_t i = 0; i < img.rgb.size(); ++i)
+        img.rgb[i] = 0.1f * float(i) + 1e-3f;
     return img;
 }
 

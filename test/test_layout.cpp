@@ -12,9 +12,8 @@ using namespace smallmlt;
 
 TEST(SharedLayout, DeviceAgreesWithHost) {
     std::vector<std::uint32_t> host = host_layout();
-    ClProgram prog(test::cl().build({"cl/shared_types.h", "cl/geometry.cl", "cl/bvh.cl",
-                                     "cl/kernels_probe.cl"},
-                                    ""));
+    ClProgram prog(test::cl().build(
+        {"cl/shared_types.h", "cl/geometry.cl", "cl/bvh.cl", "cl/kernels_probe.cl"}, ""));
     ClKernel k(prog.p, "probe_layout");
     ClBuffer out(test::cl(), CL_MEM_WRITE_ONLY, host.size() * sizeof(std::uint32_t));
     k.set_args(out);
@@ -57,7 +56,8 @@ TEST(SampleLayout, LightPickProbabilitiesAreExactAndSumToOne) {
     DeviceScene ds = prepare_scene(test::scene("furnace", 8, 8));
     ASSERT_EQ(ds.lights.size(), 12u);
     double sum = 0;
-    for (const LightEntry& e : ds.lights) sum += ds.tris[e.triangle].light_pick_prob;
+    for (const LightEntry& e : ds.lights)
+        sum += ds.tris[e.triangle].light_pick_prob;
     EXPECT_EQ(sum, 1.0);
     EXPECT_EQ(ds.lights.back().cdf_hi, 1u << light_pick_bits(12));
 }

@@ -25,7 +25,8 @@ TEST_P(Furnace, MeanRadianceMatchesAnalyticWithinHalfPercent) {
     DeviceScene ds = prepare_scene(test::scene("furnace", 64, 64, depth));
     Image img = test::render_pt(ds, 11, 64);
     double expected = 0;
-    for (int i = 0; i <= depth; ++i) expected += std::pow(0.5, i);
+    for (int i = 0; i <= depth; ++i)
+        expected += std::pow(0.5, i);
     double mean = img.mean_luminance();
     EXPECT_NEAR(mean, expected, 0.005 * expected) << "depth " << depth;
 }
@@ -66,7 +67,8 @@ TEST(Render, PixelVarianceFallsAsOneOverSpp) {
         log_n.push_back(std::log(double(n)));
         log_var.push_back(std::log(sum / double(pixels)));
     }
-    double mx = (log_n[0] + log_n[1] + log_n[2]) / 3, my = (log_var[0] + log_var[1] + log_var[2]) / 3;
+    double mx = (log_n[0] + log_n[1] + log_n[2]) / 3,
+           my = (log_var[0] + log_var[1] + log_var[2]) / 3;
     double sxy = 0, sxx = 0;
     for (int i = 0; i < 3; ++i) {
         sxy += (log_n[i] - mx) * (log_var[i] - my);
