@@ -57,7 +57,7 @@ inline BsdfSample bsdf_sample_mirror(const Material* m, float3 wo, float3 n_wo) 
 /* Reflection or refraction through a smooth interface, chosen with
  * probability F rounded to the choice slot's grid (layout_quantize_prob), so
  * the weight is exact. Radiance is scaled by 1/eta^2 on refraction. */
-inline BsdfSample bsdf_sample_dielectric(const Material* m, float3 wo, float3 n, uint u_choice,
+inline BsdfSample bsdf_sample_dielectric(const Material* m, float3 wo, float3 n, float u_choice,
                                          uint choice_bits) {
     float cos_o = dot(wo, n);
     bool entering = cos_o > 0.0f;
@@ -68,7 +68,7 @@ inline BsdfSample bsdf_sample_dielectric(const Material* m, float3 wo, float3 n,
     float p_reflect = layout_quantize_prob(f, choice_bits);
     BsdfSample s;
     s.pdf_w = 0.0f;
-    if (layout_unit(u_choice, choice_bits) < p_reflect) {
+    if (u_choice < p_reflect) {
         s.wi = bsdf_reflect(wo, n_wo);
         s.weight = (float3)(f / p_reflect);
     } else {

@@ -1,7 +1,7 @@
 /* The path: unidirectional path tracing with next-event estimation and MIS
  * (power heuristic) at diffuse vertices, Russian roulette from bounce
  * RR_START_BOUNCE. Written once for every method: it reads its numbers only
- * through smp_draw(SampleSource*, ...) and does not know who provides them.
+ * through smp_uniform(SampleSource*, dim) and does not know who provides them.
  * Bounce b owns the numbers for scattering at the b-th surface vertex, so a
  * path of depth D (D bounces at most) consumes bounces 0 .. D-1. */
 
@@ -33,12 +33,12 @@ float3 path_next_event(const SceneView* sc, SampleSource* src, uint bounce, floa
 #if LAYOUT_HAS_NEE
     uint pick = 0;
 #if SLOT_LIGHT_PICK >= 0
-    pick = light_pick(sc->lights, sc->num_lights,
-                      smp_draw(src, layout_dim(bounce, SLOT_LIGHT_PICK), LIGHT_PICK_BITS));
+    float u_pick = smp_uniform(src, layout_dim(bounce, SLOT_LIGHT_PICK));
+    pick = light_pick(sc->lights, sc->num_lights, (uint)(u_pick * (float)(1u << SLOT_LIGHT_PICK_BITS)));
 #endif
     const __global Triangle* lt = &sc->tris[sc->lights[pick].triangle];
-    float u1 = layout_unit(smp_draw(src, layout_dim(bounce, SLOT_LIGHT_U), 24u), 24u);
-    float u2 = layout_unit(smp_draw(src, layout_dim(bounce, SLOT_LIGHT_V), 24u), 24u);
+    float u1 = smp_uniform(src, layout_dim(bounce, SLOT_LIGHT_U));
+    float u2 = smp_uniform(src, layout_dim(bounce, SLOT_LIGHT_V));
     LightSample ls;
     if (!light_sample_tri(lt, sc->mats, x, u1, u2, &ls)) return (float3)(0.0f);
     float cos_x = dot(n_wo, ls.wi);
@@ -64,15 +64,15 @@ BsdfSample path_scatter(SampleSource* src, uint bounce, const Material* m, float
                         float3 n_wo) {
 #if LAYOUT_HAS_DIELECTRIC
     if (m->type == MAT_DIELECTRIC)
-        return bsdf_sample_dielectric(m, wo, n,
-                                      smp_draw(src, layout_dim(bounce, SLOT_FRESNEL), 16u), 16u);
+        return bsdf_sample_dielectric(m, wo, n, smp_uniform(src, layout_dim(bounce, SLOT_FRESNEL)),
+                                      SLOT_FRESNEL_BITS);
 #endif
 #if LAYOUT_HAS_MIRROR
     if (m->type == MAT_MIRROR) return bsdf_sample_mirror(m, wo, n_wo);
 #endif
 #if LAYOUT_HAS_DIFFUSE
-    float u1 = layout_unit(smp_draw(src, layout_dim(bounce, SLOT_BSDF_U), 24u), 24u);
-    float u2 = layout_unit(smp_draw(src, layout_dim(bounce, SLOT_BSDF_V), 24u), 24u);
+    float u1 = smp_uniform(src, layout_dim(bounce, SLOT_BSDF_U));
+    float u2 = smp_uniform(src, layout_dim(bounce, SLOT_BSDF_V));
     return bsdf_sample_diffuse(m, n_wo, u1, u2);
 #else
     BsdfSample none;
@@ -88,8 +88,8 @@ BsdfSample path_scatter(SampleSource* src, uint bounce, const Material* m, float
 inline bool path_survives(SampleSource* src, uint bounce, float3* beta) {
 #if SLOT_RR >= 0
     if (bounce < RR_START_BOUNCE) return true;
-    float q = layout_quantize_prob(fmin(0.95f, path_max3(*beta)), 16u);
-    if (layout_unit(smp_draw(src, layout_dim(bounce, SLOT_RR), 16u), 16u) >= q) return false;
+    float q = layout_quantize_prob(fmin(0.95f, path_max3(*beta)), SLOT_RR_BITS);
+    if (smp_uniform(src, layout_dim(bounce, SLOT_RR)) >= q) return false;
     *beta /= q;
 #endif
     return true;

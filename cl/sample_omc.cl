@@ -1,7 +1,7 @@
 /* Sample source for ordinary Monte Carlo: number `dim` of a path is drawn
  * from the counter-based stream of the path's key and cut to the slot's
  * stored precision, so an MLT chain regenerated from the same key sees the
- * same path. The path code reads numbers only through smp_draw. */
+ * same path. The path code reads numbers only through smp_uniform. */
 
 typedef struct {
     ulong key;
@@ -13,7 +13,9 @@ inline SampleSource smp_omc(ulong key) {
     return s;
 }
 
-/* Integer in [0, 2^bits), bits <= 24. */
-inline uint smp_draw(SampleSource* s, uint dim, uint bits) {
-    return rng_u32(s->key, dim) >> (32u - bits);
+/* Number `dim` of the path: a multiple of 2^-bits in [0, 1) for the slot's
+ * stored bits. */
+inline float smp_uniform(SampleSource* s, uint dim) {
+    uint bits = layout_bits(dim);
+    return layout_unit(rng_u32(s->key, dim) >> (32u - bits), bits);
 }

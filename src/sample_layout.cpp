@@ -47,10 +47,29 @@ std::string SampleLayout::defines() const {
     d << "#define LAYOUT_HAS_MIRROR " << (features.mirror ? 1 : 0) << "\n";
     d << "#define LAYOUT_HAS_DIELECTRIC " << (features.dielectric ? 1 : 0) << "\n";
     d << "#define LAYOUT_HAS_NEE " << (has(kLightU) ? 1 : 0) << "\n";
-    d << "#define LIGHT_PICK_BITS " << (has(kLightPick) ? bits[kLightPick] : kLowBits) << "u\n";
+    d << "#define LAYOUT_CAMERA_BITS " << kHighBits << "u\n";
+    d << "#define LAYOUT_BOUNCE_BITS " << bounce_bits << "u\n";
     d << "#define RR_START_BOUNCE " << kRouletteStart << "u\n";
-    for (int s = 0; s < kSlotCount; ++s)
-        d << "#define SLOT_" << slot_name(static_cast<Slot>(s)) << " " << index[s] << "\n";
+    for (int s = 0; s < kSlotCount; ++s) {
+        const char* name = slot_name(static_cast<Slot>(s));
+        d << "#define SLOT_" << name << " " << index[s] << "\n";
+        d << "#define SLOT_" << name << "_BITS " << bits[s] << "u\n";
+    }
+    // Per-slot bits and bit offsets within a bounce, in slot-index order.
+    std::ostringstream slot_bits, slot_offset;
+    int offset = 0;
+    for (int i = 0; i < bounce_dims; ++i)
+        for (int s = 0; s < kSlotCount; ++s)
+            if (index[s] == i) {
+                slot_bits << (i ? ", " : "") << bits[s] << "u";
+                slot_offset << (i ? ", " : "") << offset << "u";
+                offset += bits[s];
+            }
+    if (bounce_dims > 0) {
+        d << "__constant uint layout_slot_bits[" << bounce_dims << "] = {" << slot_bits.str() << "};\n";
+        d << "__constant uint layout_slot_offset[" << bounce_dims << "] = {" << slot_offset.str()
+          << "};\n";
+    }
     return d.str();
 }
 
