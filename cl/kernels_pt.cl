@@ -15,8 +15,8 @@ __kernel void pt_render(__global const Triangle* tris, __global const BvhNode* n
     uint rays = 0;
     for (uint s = 0; s < spp; ++s) {
         SampleSource src = smp_omc(rng_key(seed, pixel, first_sample + s));
-        float fx = (px + smp_uniform(&src, 0u)) / (float)frame.width;
-        float fy = (py + smp_uniform(&src, 1u)) / (float)frame.height;
+        float fx = (px + smp_uniform(&src, 0u, layout_film(0u))) / (float)frame.width;
+        float fy = (py + smp_uniform(&src, 0u, layout_film(1u))) / (float)frame.height;
         PathResult r = path_trace(&sc, &src, camera_ray(&frame, fx, fy));
         float y = path_luminance(r.radiance);
         acc += (float4)(r.radiance, y * y);

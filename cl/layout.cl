@@ -5,44 +5,38 @@
  * first. Slots a scene does not need have the index -1. Bit offsets are those
  * of the packed chain state (cl/pss.cl): a contiguous bit stream. */
 
-inline uint layout_dim(uint bounce, int slot) {
-    return LAYOUT_CAMERA_DIMS + bounce * LAYOUT_BOUNCE_DIMS + (uint)slot;
+/* Where one number lives: its index in the vector (the random stream's
+ * dimension), its offset in the packed bit stream and its stored bits. */
+typedef struct {
+    uint dim;
+    uint bit_offset;
+    uint bits;
+} LayoutSlot;
+
+/* Number i (0 or 1) of the film position. */
+inline LayoutSlot layout_film(uint i) {
+    LayoutSlot s;
+    s.dim = i;
+    s.bit_offset = i * LAYOUT_CAMERA_BITS;
+    s.bits = LAYOUT_CAMERA_BITS;
+    return s;
 }
 
-/* Bounce that owns number `dim`; the film numbers count as bounce 0. */
-inline uint layout_bounce_of(uint dim) {
 #if LAYOUT_BOUNCE_DIMS > 0
-    return dim < LAYOUT_CAMERA_DIMS ? 0u : (dim - LAYOUT_CAMERA_DIMS) / LAYOUT_BOUNCE_DIMS;
-#else
-    return 0u;
+/* Slot `slot` (>= 0) of bounce `bounce`. */
+inline LayoutSlot layout_slot(uint bounce, int slot) {
+    LayoutSlot s;
+    s.dim = LAYOUT_CAMERA_DIMS + bounce * LAYOUT_BOUNCE_DIMS + (uint)slot;
+    s.bit_offset = LAYOUT_CAMERA_DIMS * LAYOUT_CAMERA_BITS + bounce * LAYOUT_BOUNCE_BITS +
+                   layout_slot_offset[slot];
+    s.bits = layout_slot_bits[slot];
+    return s;
+}
 #endif
-}
 
-/* Stored bits of number `dim`. */
-inline uint layout_bits(uint dim) {
-#if LAYOUT_BOUNCE_DIMS > 0
-    if (dim >= LAYOUT_CAMERA_DIMS)
-        return layout_slot_bits[(dim - LAYOUT_CAMERA_DIMS) % LAYOUT_BOUNCE_DIMS];
-#endif
-    return LAYOUT_CAMERA_BITS;
-}
-
-/* Offset of number `dim` in the packed bit stream. */
-inline uint layout_bit_offset(uint dim) {
-#if LAYOUT_BOUNCE_DIMS > 0
-    if (dim >= LAYOUT_CAMERA_DIMS) {
-        uint d = dim - LAYOUT_CAMERA_DIMS;
-        return LAYOUT_CAMERA_DIMS * LAYOUT_CAMERA_BITS + (d / LAYOUT_BOUNCE_DIMS) * LAYOUT_BOUNCE_BITS +
-               layout_slot_offset[d % LAYOUT_BOUNCE_DIMS];
-    }
-#endif
-    return dim * LAYOUT_CAMERA_BITS;
-}
-
-/* v / 2^bits: exact in float for bits <= 24. */
-inline float layout_unit(uint v, uint bits) {
-    return (float)v * (1.0f / (float)(1u << bits));
-}
+/* v / 2^bits, exact in float for bits <= 24; 2^-bits is built from its
+ * exponent bits, as bits is often not a compile-time constant. */
+inline float layout_unit(uint v, uint bits) { return (float)v * as_float((127u - bits) << 23); }
 
 /* Probability p rounded up to the grid of a `bits`-wide number, so that the
  * event v < p_q * 2^bits has probability exactly p_q for uniform v. */

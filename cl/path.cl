@@ -1,7 +1,7 @@
 /* The path: unidirectional path tracing with next-event estimation and MIS
  * (power heuristic) at diffuse vertices, Russian roulette from bounce
  * RR_START_BOUNCE. Written once for every method: it reads its numbers only
- * through smp_uniform(SampleSource*, dim) and does not know who provides them.
+ * through smp_uniform (via path_number) and does not know who provides them.
  * Bounce b owns the numbers for scattering at the b-th surface vertex, so a
  * path of depth D (D bounces at most) consumes bounces 0 .. D-1. */
 
@@ -17,6 +17,7 @@ typedef struct {
 typedef struct {
     float3 radiance; /* F(x): the path's contribution, RGB */
     uint rays;       /* rays traced: closest-hit and shadow */
+    uint bounces;    /* surface vertices that scattered (read their bounce's numbers) */
 } PathResult;
 
 inline float3 path_rgb(const f32 c[3]) {
@@ -27,18 +28,23 @@ inline float path_max3(float3 v) {
     return fmax(v.x, fmax(v.y, v.z));
 }
 
+/* Number `slot` of bounce `bounce` from the sample source. */
+inline float path_number(SampleSource* src, uint bounce, int slot) {
+    return smp_uniform(src, bounce, layout_slot(bounce, slot));
+}
+
 /* Direct light at a diffuse vertex x with normal n_wo (facing the viewer). */
 float3 path_next_event(const SceneView* sc, SampleSource* src, uint bounce, float3 x, float3 n_wo,
                        const Material* m, uint* rays) {
 #if LAYOUT_HAS_NEE
     uint pick = 0;
 #if SLOT_LIGHT_PICK >= 0
-    float u_pick = smp_uniform(src, layout_dim(bounce, SLOT_LIGHT_PICK));
+    float u_pick = path_number(src, bounce, SLOT_LIGHT_PICK);
     pick = light_pick(sc->lights, sc->num_lights, (uint)(u_pick * (float)(1u << SLOT_LIGHT_PICK_BITS)));
 #endif
     const __global Triangle* lt = &sc->tris[sc->lights[pick].triangle];
-    float u1 = smp_uniform(src, layout_dim(bounce, SLOT_LIGHT_U));
-    float u2 = smp_uniform(src, layout_dim(bounce, SLOT_LIGHT_V));
+    float u1 = path_number(src, bounce, SLOT_LIGHT_U);
+    float u2 = path_number(src, bounce, SLOT_LIGHT_V);
     LightSample ls;
     if (!light_sample_tri(lt, sc->mats, x, u1, u2, &ls)) return (float3)(0.0f);
     float cos_x = dot(n_wo, ls.wi);
@@ -64,15 +70,15 @@ BsdfSample path_scatter(SampleSource* src, uint bounce, const Material* m, float
                         float3 n_wo) {
 #if LAYOUT_HAS_DIELECTRIC
     if (m->type == MAT_DIELECTRIC)
-        return bsdf_sample_dielectric(m, wo, n, smp_uniform(src, layout_dim(bounce, SLOT_FRESNEL)),
+        return bsdf_sample_dielectric(m, wo, n, path_number(src, bounce, SLOT_FRESNEL),
                                       SLOT_FRESNEL_BITS);
 #endif
 #if LAYOUT_HAS_MIRROR
     if (m->type == MAT_MIRROR) return bsdf_sample_mirror(m, wo, n_wo);
 #endif
 #if LAYOUT_HAS_DIFFUSE
-    float u1 = smp_uniform(src, layout_dim(bounce, SLOT_BSDF_U));
-    float u2 = smp_uniform(src, layout_dim(bounce, SLOT_BSDF_V));
+    float u1 = path_number(src, bounce, SLOT_BSDF_U);
+    float u2 = path_number(src, bounce, SLOT_BSDF_V);
     return bsdf_sample_diffuse(m, n_wo, u1, u2);
 #else
     BsdfSample none;
@@ -89,7 +95,7 @@ inline bool path_survives(SampleSource* src, uint bounce, float3* beta) {
 #if SLOT_RR >= 0
     if (bounce < RR_START_BOUNCE) return true;
     float q = layout_quantize_prob(fmin(0.95f, path_max3(*beta)), SLOT_RR_BITS);
-    if (smp_uniform(src, layout_dim(bounce, SLOT_RR)) >= q) return false;
+    if (path_number(src, bounce, SLOT_RR) >= q) return false;
     *beta /= q;
 #endif
     return true;
@@ -100,6 +106,7 @@ PathResult path_trace(const SceneView* sc, SampleSource* src, Ray ray) {
     PathResult res;
     res.radiance = (float3)(0.0f);
     res.rays = 0;
+    res.bounces = 0;
     float3 beta = (float3)(1.0f);
     float prev_pdf_w = 0.0f; /* 0: previous vertex was specular or the camera */
     for (uint bounce = 0;; ++bounce) {
@@ -118,6 +125,7 @@ PathResult path_trace(const SceneView* sc, SampleSource* src, Ray ray) {
             res.radiance += beta * path_rgb(m.ke) * w;
         }
         if (bounce >= sc->depth) break;
+        res.bounces = bounce + 1u;
         float3 x = ray.o + ray.d * hit.t;
         float3 n_wo = cos_o >= 0.0f ? n : -n;
         if (m.type == MAT_DIFFUSE)

@@ -13,9 +13,8 @@ inline SampleSource smp_omc(ulong key) {
     return s;
 }
 
-/* Number `dim` of the path: a multiple of 2^-bits in [0, 1) for the slot's
- * stored bits. */
-inline float smp_uniform(SampleSource* s, uint dim) {
-    uint bits = layout_bits(dim);
-    return layout_unit(rng_u32(s->key, dim) >> (32u - bits), bits);
+/* The path's number in slot `at`: a multiple of 2^-bits in [0, 1) for the
+ * slot's stored bits. `bounce` is the bounce that owns it (unused here). */
+inline float smp_uniform(SampleSource* s, uint bounce, LayoutSlot at) {
+    return layout_unit(rng_u32(s->key, at.dim) >> (32u - at.bits), at.bits);
 }

@@ -81,4 +81,25 @@ typedef struct {
     u32 num_lights;
 } Frame;
 
+/* A chain's value beside its packed numbers: F(x), the RGB contribution of
+ * the path of its current state x, and how many bounces of x's numbers are
+ * live (the path scattered that many times; numbers of later bounces are
+ * dead and drawn afresh when a proposal reaches them). 16 bytes. */
+typedef struct {
+    f32 rgb[3];
+    u32 bounces;
+} ChainValue;
+
+/* Splats are accumulated as 64-bit fixed-point integers with this many
+ * fraction bits, so sums are exact and do not depend on the order in which
+ * work-items add them (deterministic for a given seed and device). */
+#define SPLAT_FRAC_BITS 24
+
+/* Counters of an MLT render, 64-bit each, in this order. */
+#define MLT_STAT_ACCEPTED 0
+#define MLT_STAT_LARGE 1
+#define MLT_STAT_NONFINITE 2
+#define MLT_STAT_RAYS 3
+#define MLT_STAT_COUNT 4
+
 #endif

@@ -19,7 +19,10 @@ Usage:
   smallmlt --help | --version
 
 Render options:
-  --spp N            samples per pixel (default 16)
+  --method pt|mlt    path tracing (default) or Metropolis light transport in
+                     primary sample space (Kelemen), one chain per thread
+  --spp N            samples per pixel (default 16); for mlt, mutations per pixel
+                     on average
   --time SECONDS     render for this long instead of a sample count
   --seed S           seed of all random numbers (default 1); same seed, same image
   --out FILE         output image: .png (tone-mapped sRGB), .pfm or .exr (linear
@@ -29,6 +32,10 @@ Render options:
   --depth D          maximum bounces, 0..64 (overrides the scene)
   --device INDEX     OpenCL device from `smallmlt devices` (default 0)
   --quiet            no progress bar and no summary line
+
+MLT options:
+  --large-step P     probability that a mutation draws a whole new path (default 0.5)
+  --threads N        number of chains (default 65536)
 
 Exit status: 0 success, 1 bad input or device error, 2 bad command line.
 The scene format is described in doc/scene-format.md.
@@ -74,6 +81,14 @@ std::uint64_t to_u64(const std::string& flag, const std::string& v) {
     return x;
 }
 
+double to_unit_interval(const std::string& flag, const std::string& v) {
+    char* end = nullptr;
+    double x = std::strtod(v.c_str(), &end);
+    if (v.empty() || *end != '\0' || !(x >= 0 && x <= 1))
+        throw UsageError(flag + ": '" + v + "' is not a probability in [0, 1]");
+    return x;
+}
+
 double to_seconds(const std::string& flag, const std::string& v) {
     char* end = nullptr;
     double x = std::strtod(v.c_str(), &end);
@@ -94,7 +109,16 @@ RenderOptions parse_render(ArgReader& r) {
     while (!r.done()) {
         std::string arg = r.next();
         std::string flag = arg.substr(0, arg.find('='));
-        if (flag == "--spp") {
+        if (flag == "--method") {
+            std::string m = r.value(flag, arg);
+            if (m == "pt") o.method = Method::Pt;
+            else if (m == "mlt") o.method = Method::Mlt;
+            else throw UsageError("--method: '" + m + "' is not a method (pt or mlt)");
+        } else if (flag == "--large-step") {
+            o.large_step = float(to_unit_interval(flag, r.value(flag, arg)));
+        } else if (flag == "--threads") {
+            o.threads = std::uint32_t(to_int(flag, r.value(flag, arg), 1, 1 << 26));
+        } else if (flag == "--spp") {
             o.spp = std::uint32_t(to_int(flag, r.value(flag, arg), 1, 1 << 30));
         } else if (flag == "--time") {
             o.time_s = to_seconds(flag, r.value(flag, arg));

@@ -7,8 +7,13 @@
 
 namespace smallmlt {
 
+enum class Method { Pt, Mlt };
+
 struct RenderOptions {
     std::string scene;
+    Method method = Method::Pt;
+    float large_step = 0.5f;
+    std::uint32_t threads = 1u << 16;
     std::optional<std::uint32_t> spp;
     std::optional<double> time_s;
     std::uint64_t seed = 1;

@@ -1,5 +1,7 @@
 #include "path_tracer.hpp"
 
+#include <cstdio>
+
 namespace smallmlt {
 
 const std::vector<std::string>& pt_program_files() {
@@ -10,18 +12,9 @@ const std::vector<std::string>& pt_program_files() {
     return files;
 }
 
-namespace {
-
-template <typename T> ClBuffer upload(const ClContext& cl, const std::vector<T>& v) {
-    return ClBuffer(cl, CL_MEM_READ_ONLY, v.size() * sizeof(T), v.data());
-}
-
-} // namespace
-
 PathTracer::PathTracer(const ClContext& cl, const DeviceScene& ds, std::uint64_t seed)
     : cl_(cl), ds_(ds), seed_(seed), program_(cl.build(pt_program_files(), ds.layout.defines())),
-      kernel_(program_.p, "pt_render"), tris_(upload(cl, ds.tris)), nodes_(upload(cl, ds.nodes)),
-      mats_(upload(cl, ds.materials)), lights_(upload(cl, ds.lights)),
+      kernel_(program_.p, "pt_render"), scene_(cl, ds),
       accum_(cl, CL_MEM_READ_WRITE, pixels() * 4 * sizeof(float)),
       ray_count_(cl, CL_MEM_READ_WRITE, pixels() * sizeof(cl_ulong)) {
     accum_.fill_zero(cl);
@@ -32,10 +25,17 @@ void PathTracer::add_samples(std::uint32_t n) {
     if (n == 0) return;
     cl_ulong seed = seed_;
     cl_uint first = spp_, count = n;
-    kernel_.set_args(tris_, nodes_, mats_, lights_, ds_.frame, seed, first, count, accum_,
+    kernel_.set_args(scene_.tris, scene_.nodes, scene_.mats, scene_.lights, ds_.frame, seed, first, count, accum_,
                      ray_count_);
     kernel_.run(cl_, pixels());
     spp_ += n;
+}
+
+std::string PathTracer::summary(double seconds) const {
+    char buf[160];
+    std::snprintf(buf, sizeof buf, "%u spp, %.3f M paths/s, %.3f M rays/s", spp_,
+                  double(spp_) * double(pixels()) / seconds * 1e-6, double(rays()) / seconds * 1e-6);
+    return buf;
 }
 
 std::uint64_t PathTracer::rays() const {

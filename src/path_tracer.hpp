@@ -3,7 +3,9 @@
 #pragma once
 #include "device_scene.hpp"
 #include "image.hpp"
+#include "integrator.hpp"
 #include "ocl.hpp"
+#include "scene_buffers.hpp"
 
 #include <cstdint>
 #include <memory>
@@ -13,9 +15,14 @@ namespace smallmlt {
 // Kernel files of the path-tracing program, in build order.
 const std::vector<std::string>& pt_program_files();
 
-class PathTracer {
+class PathTracer : public Integrator {
   public:
     PathTracer(const ClContext& cl, const DeviceScene& ds, std::uint64_t seed);
+
+    void advance(std::uint32_t units) override { add_samples(units); }
+    std::uint64_t units_for_spp(std::uint32_t spp) const override { return spp; }
+    double spp_done() const override { return spp_; }
+    std::string summary(double seconds) const override;
 
     // Adds n samples per pixel (numbered spp() .. spp() + n - 1).
     void add_samples(std::uint32_t n);
@@ -35,7 +42,8 @@ class PathTracer {
     std::uint32_t spp_ = 0;
     ClProgram program_;
     ClKernel kernel_;
-    ClBuffer tris_, nodes_, mats_, lights_, accum_, ray_count_;
+    SceneBuffers scene_;
+    ClBuffer accum_, ray_count_;
 };
 
 } // namespace smallmlt

@@ -1,6 +1,7 @@
 #include "render_command.hpp"
 
 #include "error.hpp"
+#include "mlt.hpp"
 #include "path_tracer.hpp"
 #include "progress.hpp"
 #include "scene.hpp"
@@ -8,6 +9,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <memory>
 #include <unistd.h>
 
 namespace smallmlt {
@@ -35,6 +37,16 @@ constexpr double kPassSeconds = 0.25; // target duration of one kernel launch
 
 } // namespace
 
+std::unique_ptr<Integrator> make_integrator(const RenderOptions& o, const ClContext& cl,
+                                            const DeviceScene& ds) {
+    if (o.method == Method::Pt) return std::make_unique<PathTracer>(cl, ds, o.seed);
+    MltOptions m;
+    m.chains = o.threads;
+    m.large_step = o.large_step;
+    m.seed = o.seed;
+    return std::make_unique<MltRenderer>(cl, ds, m);
+}
+
 int run_render(const RenderOptions& o) {
     Clock::time_point t_setup = Clock::now();
     check_output_dirs(o.outs);
@@ -44,45 +56,47 @@ int run_render(const RenderOptions& o) {
     if (o.depth) scene.depth = *o.depth;
     DeviceScene ds = prepare_scene(scene);
     ClContext cl(o.device);
-    PathTracer pt(cl, ds, o.seed);
+    std::unique_ptr<Integrator> method = make_integrator(o, cl, ds);
     double setup_s = seconds_since(t_setup);
 
     Progress progress(!o.quiet);
     Clock::time_point t0 = Clock::now();
+    method->prepare();
+    std::uint64_t target = o.spp ? method->units_for_spp(*o.spp) : 0, done = 0;
     std::uint32_t batch = 1;
     for (;;) {
         double elapsed = seconds_since(t0);
-        std::uint32_t n = batch;
+        std::uint64_t n = batch;
         if (o.spp) {
-            if (pt.spp() >= *o.spp) break;
-            n = std::min(n, *o.spp - pt.spp());
-            progress.update(double(pt.spp()) / *o.spp,
-                            std::to_string(pt.spp()) + "/" + std::to_string(*o.spp) + " spp");
+            if (done >= target) break;
+            n = std::min(n, target - done);
+            progress.update(double(done) / double(target),
+                            std::to_string(int(method->spp_done())) + "/" +
+                                std::to_string(*o.spp) + " per pixel");
         } else {
             if (elapsed >= *o.time_s) break;
-            progress.update(elapsed / *o.time_s, std::to_string(pt.spp()) + " spp");
+            progress.update(elapsed / *o.time_s,
+                            std::to_string(int(method->spp_done())) + " per pixel");
         }
         Clock::time_point tp = Clock::now();
-        pt.add_samples(n);
-        double pass_s = std::max(seconds_since(tp), 1e-4);
-        double per_sample = pass_s / n;
-        double next = kPassSeconds / per_sample;
+        method->advance(std::uint32_t(n));
+        done += n;
+        double per_unit = std::max(seconds_since(tp), 1e-4) / double(n);
+        double next = kPassSeconds / per_unit;
         if (o.time_s)
-            next = std::min(next, std::max(1.0, (*o.time_s - seconds_since(t0)) / per_sample));
+            next = std::min(next, std::max(1.0, (*o.time_s - seconds_since(t0)) / per_unit));
         batch = std::uint32_t(std::clamp(next, 1.0, 4096.0));
     }
     double render_s = seconds_since(t0);
     progress.finish();
 
-    Image img = pt.image();
-    for (const std::string& f : o.outs)
-        write_image(img, f);
+    Image img = method->image();
+    for (const std::string& f : o.outs) write_image(img, f);
     if (!o.quiet) {
-        double paths = double(pt.spp()) * double(pt.pixels());
-        std::printf("%s: %dx%d, %u spp, depth %d: %.2f s (+%.2f s setup), %.3f M paths/s, "
-                    "%.3f M rays/s\n",
-                    o.scene.c_str(), scene.width, scene.height, pt.spp(), scene.depth, render_s,
-                    setup_s, paths / render_s * 1e-6, double(pt.rays()) / render_s * 1e-6);
+        std::printf("%s: %dx%d, depth %d, %s: %.2f s (+%.2f s setup), %s\n", o.scene.c_str(),
+                    scene.width, scene.height, scene.depth,
+                    o.method == Method::Pt ? "pt" : "mlt", render_s, setup_s,
+                    method->summary(render_s).c_str());
         if (scene.dropped_degenerate)
             std::printf("note: %d zero-area triangle(s) left out\n", scene.dropped_degenerate);
     }

@@ -34,6 +34,8 @@ SMALLMLT_CHECK_OFFSET(Frame, du, 32);
 SMALLMLT_CHECK_OFFSET(Frame, depth, 44);
 SMALLMLT_CHECK_OFFSET(Frame, dv, 48);
 SMALLMLT_CHECK_OFFSET(Frame, num_lights, 60);
+static_assert(sizeof(ChainValue) == 16, "ChainValue");
+SMALLMLT_CHECK_OFFSET(ChainValue, bounces, 12);
 #undef SMALLMLT_CHECK_OFFSET
 
 std::vector<std::uint32_t> host_layout() {
@@ -62,7 +64,9 @@ std::vector<std::uint32_t> host_layout() {
             offsetof(Frame, du),
             offsetof(Frame, depth),
             offsetof(Frame, dv),
-            offsetof(Frame, num_lights)};
+            offsetof(Frame, num_lights),
+            sizeof(ChainValue),
+            offsetof(ChainValue, bounces)};
 }
 
 } // namespace smallmlt

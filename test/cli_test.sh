@@ -64,9 +64,13 @@ absent missing_scene_no_file "$DIR/missing.png"
 printf 'film 8 8\nlens 1\n' > "$DIR/bad.scene"
 check bad_scene 1 "bad.scene:2: unknown directive 'lens'" -- "$BIN" render "$DIR/bad.scene" --out "$DIR/bad.png"
 absent bad_scene_no_file "$DIR/bad.png"
-check render_ok 0 "8x8, 2 spp" -- "$BIN" render scenes/cornell.scene --width 8 --height 8 --spp 2 --out "$DIR/ok.png" --out "$DIR/ok.pfm"
+check render_ok 0 "8x8, depth 8, pt: " -- "$BIN" render scenes/cornell.scene --width 8 --height 8 --spp 2 --out "$DIR/ok.png" --out "$DIR/ok.pfm"
+check render_mlt 0 "mlt: " -- "$BIN" render scenes/cornell.scene --width 8 --height 8 --spp 2 --method mlt --threads 64 --out "$DIR/mlt.pfm"
+check method_bad 2 "--method: 'bdpt' is not a method" -- "$BIN" render scenes/cornell.scene --method bdpt
+check large_step_range 2 "--large-step: '1.5' is not a probability" -- "$BIN" render scenes/cornell.scene --large-step 1.5
+check threads_zero 2 "--threads: 0 is out of range" -- "$BIN" render scenes/cornell.scene --threads 0
 check render_quiet 0 "" -- "$BIN" render scenes/cornell.scene --width 8 --height 8 --spp 1 --quiet --out "$DIR/q.exr"
-for f in ok.png ok.pfm q.exr; do
+for f in ok.png ok.pfm q.exr mlt.pfm; do
     if [ -s "$DIR/$f" ]; then pass=$((pass + 1)); echo "ok   wrote $f"; else fail=$((fail + 1)); echo "FAIL $f missing"; fi
 done
 leftover=$(ls -A "$DIR" | grep '^\.tmp-' || true)

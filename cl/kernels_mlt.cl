@@ -1,0 +1,95 @@
+/* Entry points of primary-sample-space MLT (Kelemen et al. 2002) with the
+ * chain storage of Frolov and Galaktionov: one chain per work-item, states
+ * packed (pss.cl), proposals lazy (sample_mlt.cl). Splats use expected
+ * values: each step adds a * F(y)/I(y) at y's pixel and (1 - a) * F(x)/I(x)
+ * at x's, with a = min(1, I(y)/I(x)) and I the luminance. */
+
+#pragma OPENCL EXTENSION cl_khr_int64_base_atomics : enable
+
+inline bool mlt_finite(float3 f) { return isfinite(f.x) && isfinite(f.y) && isfinite(f.z); }
+
+/* A non-finite F is dropped and counted: it contributes nothing and a chain
+ * never moves to it. */
+inline MltSample mlt_checked(MltSample s, __global ulong* stats) {
+    if (!mlt_finite(s.f)) {
+        atom_inc(&stats[MLT_STAT_NONFINITE]);
+        s.f = (float3)(0.0f);
+    }
+    return s;
+}
+
+/* Adds w * f / lum(f) to a pixel in fixed point (SPLAT_FRAC_BITS). */
+inline void mlt_splat(__global ulong* splat, uint pixel, float3 f, float w) {
+    float lum = path_luminance(f);
+    if (!(w > 0.0f) || !(lum > 0.0f)) return;
+    float3 c = f * (w / lum) * (float)(1u << SPLAT_FRAC_BITS);
+    atom_add(&splat[3u * pixel + 0u], (ulong)(c.x + 0.5f));
+    atom_add(&splat[3u * pixel + 1u], (ulong)(c.y + 0.5f));
+    atom_add(&splat[3u * pixel + 2u], (ulong)(c.z + 0.5f));
+}
+
+/* Luminance of the OMC path of each key rng_key(seed, first + i, 0): the
+ * normalization b = E[I] is their mean. */
+__kernel void mlt_luminance(__global const Triangle* tris, __global const BvhNode* nodes,
+                            __global const Material* mats, __global const LightEntry* lights,
+                            const Frame frame, __global uint* state, const ulong seed,
+                            const uint first, const uint count, __global float* lum,
+                            __global ulong* stats) {
+    uint i = get_global_id(0);
+    if (i >= count) return;
+    SceneView sc = path_scene(tris, nodes, mats, lights, &frame);
+    SampleSource src = smp_chain(state, 0u, 1u, rng_key(seed, first + i, 0u), SMP_LARGE, 0u);
+    MltSample s = mlt_checked(mlt_evaluate(&sc, &frame, &src), stats);
+    lum[i] = path_luminance(s.f);
+}
+
+/* Starts chain c at the OMC path of key rng_key(seed, c, 0). */
+__kernel void mlt_init(__global const Triangle* tris, __global const BvhNode* nodes,
+                       __global const Material* mats, __global const LightEntry* lights,
+                       const Frame frame, __global uint* state, __global ChainValue* values,
+                       const uint num_chains, const ulong seed, __global ulong* stats) {
+    uint c = get_global_id(0);
+    if (c >= num_chains) return;
+    SceneView sc = path_scene(tris, nodes, mats, lights, &frame);
+    SampleSource src = smp_chain(state, c, num_chains, rng_key(seed, c, 0u), SMP_LARGE, 0u);
+    MltSample s = mlt_checked(mlt_evaluate(&sc, &frame, &src), stats);
+    mlt_commit(&src, s.bounces);
+    ChainValue v = {{s.f.x, s.f.y, s.f.z}, s.bounces};
+    values[c] = v;
+}
+
+/* One Metropolis step of every chain: propose, splat, accept or reject. A
+ * step is large when its stream's number MLT_DIM_LARGE is below
+ * large_threshold (= P * 2^32). */
+__kernel void mlt_step(__global const Triangle* tris, __global const BvhNode* nodes,
+                       __global const Material* mats, __global const LightEntry* lights,
+                       const Frame frame, __global uint* state, __global ChainValue* values,
+                       const uint num_chains, const ulong seed, const uint iteration,
+                       const uint large_threshold, __global ulong* splat, __global ulong* stats) {
+    uint c = get_global_id(0);
+    if (c >= num_chains) return;
+    SceneView sc = path_scene(tris, nodes, mats, lights, &frame);
+    ChainValue x = values[c];
+    ulong key = rng_key(seed, c, iteration);
+    bool large = rng_u32(key, MLT_DIM_LARGE) < large_threshold;
+    SampleSource src = smp_chain(state, c, num_chains, key, large ? SMP_LARGE : SMP_SMALL, x.bounces);
+    MltSample y = mlt_checked(mlt_evaluate(&sc, &frame, &src), stats);
+
+    float3 fx = (float3)(x.rgb[0], x.rgb[1], x.rgb[2]);
+    float ix = path_luminance(fx), iy = path_luminance(y.f);
+    float a = ix > 0.0f ? fmin(1.0f, iy / ix) : 1.0f;
+    uint x_pixel = mlt_pixel(&frame, pss_load(state, c, num_chains, layout_film(0u)),
+                            pss_load(state, c, num_chains, layout_film(1u)));
+    mlt_splat(splat, y.pixel, y.f, a);
+    mlt_splat(splat, x_pixel, fx, 1.0f - a);
+
+    float u = (float)(rng_u32(key, MLT_DIM_ACCEPT) >> 8) * (1.0f / 16777216.0f);
+    if (u < a) {
+        mlt_commit(&src, y.bounces);
+        ChainValue v = {{y.f.x, y.f.y, y.f.z}, y.bounces};
+        values[c] = v;
+        atom_inc(&stats[MLT_STAT_ACCEPTED]);
+    }
+    if (large) atom_inc(&stats[MLT_STAT_LARGE]);
+    atom_add(&stats[MLT_STAT_RAYS], (ulong)y.rays);
+}

@@ -1,0 +1,58 @@
+/* Primary-sample-space chain states in device memory, after Kelemen et al.
+ * 2002 with the storage of Frolov and Galaktionov (section 3.2): each number
+ * is kept at its slot's precision (24 or 16 bits, layout.cl), packed into a
+ * contiguous bit stream of 32-bit words with no padding. Word w of chain c is
+ * at state[w * stride + c] (stride = number of chains), so neighbouring
+ * work-items touch neighbouring words.
+ *
+ * With PSS_FLOAT32 defined, every number is stored unpacked as a 32-bit float
+ * in its own word and mutated in float arithmetic: the reference build that
+ * tests compare the packed one against. */
+
+#ifndef PSS_FLOAT32
+
+/* Integer value of `bits` bits at bit offset `off` of chain `chain`. */
+inline uint pss_read_bits(const __global uint* state, uint chain, uint stride, uint off,
+                          uint bits) {
+    uint w = off >> 5, shift = off & 31u;
+    uint v = state[w * stride + chain] >> shift;
+    if (shift + bits > 32u) v |= state[(w + 1u) * stride + chain] << (32u - shift);
+    return v & ((1u << bits) - 1u);
+}
+
+inline void pss_write_bits(__global uint* state, uint chain, uint stride, uint off, uint bits,
+                           uint v) {
+    uint w = off >> 5, shift = off & 31u;
+    uint mask = (1u << bits) - 1u;
+    __global uint* lo = &state[w * stride + chain];
+    *lo = (*lo & ~(mask << shift)) | (v << shift);
+    if (shift + bits > 32u) {
+        __global uint* hi = &state[(w + 1u) * stride + chain];
+        uint hi_bits = shift + bits - 32u;
+        *hi = (*hi & ~((1u << hi_bits) - 1u)) | (v >> (32u - shift));
+    }
+}
+
+/* A chain's number in slot `at` as a float in [0, 1) (a multiple of 2^-bits). */
+inline float pss_load(const __global uint* state, uint chain, uint stride, LayoutSlot at) {
+    return layout_unit(pss_read_bits(state, chain, stride, at.bit_offset, at.bits), at.bits);
+}
+
+/* Stores u, which must lie on the slot's grid (as pss_load and the
+ * proposals of sample_mlt.cl produce). */
+inline void pss_store(__global uint* state, uint chain, uint stride, LayoutSlot at, float u) {
+    pss_write_bits(state, chain, stride, at.bit_offset, at.bits,
+                   (uint)(u * (float)(1u << at.bits)));
+}
+
+#else
+
+inline float pss_load(const __global uint* state, uint chain, uint stride, LayoutSlot at) {
+    return as_float(state[at.dim * stride + chain]);
+}
+
+inline void pss_store(__global uint* state, uint chain, uint stride, LayoutSlot at, float u) {
+    state[at.dim * stride + chain] = as_uint(u);
+}
+
+#endif

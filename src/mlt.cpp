@@ -1,0 +1,160 @@
+#include "mlt.hpp"
+
+#include "error.hpp"
+#include "rng.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+
+namespace smallmlt {
+
+namespace {
+
+// Seeds of the three kinds of streams of a render.
+constexpr std::uint64_t kPurposeB = 1, kPurposeInit = 2, kPurposeStep = 3;
+
+double seconds_since(std::chrono::steady_clock::time_point t0) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+std::string program_defines(const DeviceScene& ds, const MltOptions& opt) {
+    return ds.layout.defines() + (opt.float32_states ? "#define PSS_FLOAT32 1\n" : "");
+}
+
+const DeviceScene& require_atomics(const ClContext& cl, const DeviceScene& ds) {
+    if (!cl.device().int64_atomics)
+        throw InputError("device " + cl.device().name +
+                         " lacks cl_khr_int64_base_atomics, which MLT splatting needs; "
+                         "use --method pt on it");
+    return ds;
+}
+
+} // namespace
+
+const std::vector<std::string>& mlt_program_files() {
+    static const std::vector<std::string> files = {
+        "cl/shared_types.h", "cl/rng.cl",    "cl/layout.cl", "cl/pss.cl",
+        "cl/sample_mlt.cl",  "cl/geometry.cl", "cl/bvh.cl",  "cl/bsdf.cl",
+        "cl/light.cl",       "cl/path.cl",   "cl/camera.cl", "cl/eval_path.cl",
+        "cl/kernels_mlt.cl"};
+    return files;
+}
+
+std::uint32_t mlt_words_per_chain(const SampleLayout& layout, bool float32_states) {
+    if (float32_states) return static_cast<std::uint32_t>(layout.vector_dims());
+    return static_cast<std::uint32_t>((layout.vector_bits() + 31) / 32);
+}
+
+MltRenderer::MltRenderer(const ClContext& cl, const DeviceScene& ds, const MltOptions& opt)
+    : cl_(cl), ds_(require_atomics(cl, ds)), opt_(opt),
+      program_(cl.build(mlt_program_files(), program_defines(ds, opt))),
+      k_lum_(program_.p, "mlt_luminance"), k_init_(program_.p, "mlt_init"),
+      k_step_(program_.p, "mlt_step"), scene_(cl, ds),
+      state_(cl, CL_MEM_READ_WRITE,
+             std::size_t(mlt_words_per_chain(ds.layout, opt.float32_states)) * opt.chains *
+                 sizeof(cl_uint)),
+      values_(cl, CL_MEM_READ_WRITE, std::size_t(opt.chains) * sizeof(ChainValue)),
+      splat_(cl, CL_MEM_READ_WRITE, pixels() * 3 * sizeof(cl_ulong)),
+      stats_(cl, CL_MEM_READ_WRITE, MLT_STAT_COUNT * sizeof(cl_ulong)) {
+    state_.fill_zero(cl);
+    splat_.fill_zero(cl);
+    stats_.fill_zero(cl);
+}
+
+void MltRenderer::estimate_b() {
+    std::uint32_t batch = opt_.chains;
+    ClBuffer lum(cl_, CL_MEM_WRITE_ONLY, std::size_t(batch) * sizeof(float));
+    std::vector<float> host(batch);
+    double sum = 0, sum2 = 0;
+    cl_ulong seed = derive_seed(opt_.seed, kPurposeB);
+    for (std::uint32_t first = 0; first < opt_.b_samples; first += batch) {
+        cl_uint count = std::min(batch, opt_.b_samples - first);
+        k_lum_.set_args(scene_.tris, scene_.nodes, scene_.mats, scene_.lights, ds_.frame, state_,
+                        seed, cl_uint(first), count, lum, stats_);
+        k_lum_.run(cl_, count);
+        lum.read(cl_, host.data());
+        for (cl_uint i = 0; i < count; ++i) {
+            sum += host[i];
+            sum2 += double(host[i]) * host[i];
+        }
+    }
+    double n = opt_.b_samples;
+    b_ = sum / n;
+    double var = n > 1 ? (sum2 / n - b_ * b_) * n / (n - 1) : 0;
+    b_rel_error_ = b_ > 0 ? std::sqrt(std::max(var, 0.0) / n) / b_ : 0;
+}
+
+void MltRenderer::prepare() {
+    auto t0 = std::chrono::steady_clock::now();
+    estimate_b();
+    init_chains();
+    prepare_seconds_ += seconds_since(t0);
+}
+
+void MltRenderer::init_chains() {
+    cl_ulong seed = derive_seed(opt_.seed, kPurposeInit);
+    k_init_.set_args(scene_.tris, scene_.nodes, scene_.mats, scene_.lights, ds_.frame, state_,
+                     values_, cl_uint(opt_.chains), seed, stats_);
+    k_init_.run(cl_, opt_.chains);
+}
+
+void MltRenderer::step(std::uint32_t n) {
+    cl_ulong seed = derive_seed(opt_.seed, kPurposeStep);
+    double p = std::clamp(double(opt_.large_step), 0.0, 1.0);
+    cl_uint threshold = p >= 1.0 ? 0xFFFFFFFFu : cl_uint(p * 4294967296.0);
+    auto t0 = std::chrono::steady_clock::now();
+    for (std::uint32_t i = 0; i < n; ++i) {
+        cl_uint iteration = ++iterations_;
+        k_step_.set_args(scene_.tris, scene_.nodes, scene_.mats, scene_.lights, ds_.frame, state_,
+                         values_, cl_uint(opt_.chains), seed, iteration, threshold, splat_, stats_);
+        k_step_.run(cl_, opt_.chains);
+    }
+    step_seconds_ += seconds_since(t0);
+}
+
+std::uint32_t MltRenderer::state_bytes_per_chain() const {
+    return mlt_words_per_chain(ds_.layout, opt_.float32_states) * 4u + sizeof(ChainValue);
+}
+
+MltStats MltRenderer::stats() const {
+    cl_ulong s[MLT_STAT_COUNT];
+    stats_.read(cl_, s);
+    MltStats out;
+    out.mutations = std::uint64_t(iterations_) * opt_.chains;
+    out.accepted = s[MLT_STAT_ACCEPTED];
+    out.large = s[MLT_STAT_LARGE];
+    out.nonfinite = s[MLT_STAT_NONFINITE];
+    out.rays = s[MLT_STAT_RAYS];
+    return out;
+}
+
+std::string MltRenderer::summary(double) const {
+    MltStats s = stats();
+    char buf[320];
+    std::snprintf(buf, sizeof buf,
+                  "%u chains x %u steps (state %u B/chain), %.3f M mutations/s, %.3f M rays/s (steps only; b and "
+                  "chain start %.2f s), acceptance %.1f%%, large steps %.1f%%, b = %.5g (+-%.2f%%), "
+                  "%llu non-finite dropped",
+                  opt_.chains, iterations_, state_bytes_per_chain(),
+                  double(s.mutations) / step_seconds_ * 1e-6,
+                  double(s.rays) / step_seconds_ * 1e-6, prepare_seconds_,
+                  s.mutations ? 100.0 * double(s.accepted) / double(s.mutations) : 0.0,
+                  s.mutations ? 100.0 * double(s.large) / double(s.mutations) : 0.0, b_,
+                  100.0 * b_rel_error_, static_cast<unsigned long long>(s.nonfinite));
+    return buf;
+}
+
+Image MltRenderer::image() const {
+    std::vector<cl_ulong> acc(pixels() * 3);
+    splat_.read(cl_, acc.data());
+    Image img(int(ds_.frame.width), int(ds_.frame.height));
+    double mutations = double(iterations_) * opt_.chains;
+    if (mutations == 0) return img;
+    double scale = b_ * double(pixels()) / mutations / double(1u << SPLAT_FRAC_BITS);
+    for (std::size_t i = 0; i < acc.size(); ++i) img.rgb[i] = float(double(acc[i]) * scale);
+    return img;
+}
+
+} // namespace smallmlt

@@ -1,0 +1,81 @@
+// Primary-sample-space MLT on the device (cl/kernels_mlt.cl): N chains, one
+// per work-item, with packed states and lazy proposals. The host estimates
+// the normalization b, starts the chains, runs steps and assembles the image.
+#pragma once
+#include "device_scene.hpp"
+#include "image.hpp"
+#include "integrator.hpp"
+#include "ocl.hpp"
+#include "scene_buffers.hpp"
+
+#include <cstdint>
+
+namespace smallmlt {
+
+struct MltOptions {
+    std::uint32_t chains = 1u << 16;
+    float large_step = 0.5f;         // probability that a step is large
+    std::uint64_t seed = 1;
+    std::uint32_t b_samples = 1u << 18; // OMC samples that estimate b
+    bool float32_states = false;     // unpacked float32 states (reference build)
+};
+
+// Kernel files of the MLT program, in build order.
+const std::vector<std::string>& mlt_program_files();
+
+// Words of 32 bits that one chain's state takes for this layout.
+std::uint32_t mlt_words_per_chain(const SampleLayout& layout, bool float32_states);
+
+struct MltStats {
+    std::uint64_t mutations = 0, accepted = 0, large = 0, nonfinite = 0, rays = 0;
+};
+
+class MltRenderer : public Integrator {
+  public:
+    MltRenderer(const ClContext& cl, const DeviceScene& ds, const MltOptions& opt);
+
+    void prepare() override;
+    void advance(std::uint32_t units) override { step(units); }
+    std::uint64_t units_for_spp(std::uint32_t spp) const override {
+        return (std::uint64_t(spp) * pixels() + opt_.chains - 1) / opt_.chains;
+    }
+    double spp_done() const override { return double(iterations_) * opt_.chains / double(pixels()); }
+    std::string summary(double seconds) const override;
+
+    // b = mean luminance of opt.b_samples OMC samples; relative standard error.
+    void estimate_b();
+    double b() const { return b_; }
+    double b_rel_error() const { return b_rel_error_; }
+
+    // Starts every chain at an independent OMC path (uniform in primary sample space).
+    void init_chains();
+    // n Metropolis steps of every chain.
+    void step(std::uint32_t n);
+
+    std::uint32_t iterations() const { return iterations_; }
+    std::uint64_t pixels() const { return std::uint64_t(ds_.frame.width) * ds_.frame.height; }
+    MltStats stats() const;
+    // Packed numbers plus the ChainValue (F(x), live bounces).
+    std::uint32_t state_bytes_per_chain() const;
+    // b * splats * pixels / mutations.
+    Image image() const override;
+
+    // For tests: the raw buffers.
+    const ClBuffer& state() const { return state_; }
+    const ClBuffer& values() const { return values_; }
+    cl_program program() const { return program_.p; }
+
+  private:
+    const ClContext& cl_;
+    const DeviceScene& ds_;
+    MltOptions opt_;
+    ClProgram program_;
+    ClKernel k_lum_, k_init_, k_step_;
+    SceneBuffers scene_;
+    ClBuffer state_, values_, splat_, stats_;
+    double b_ = 0, b_rel_error_ = 0;
+    std::uint32_t iterations_ = 0;
+    double prepare_seconds_ = 0, step_seconds_ = 0; // wall time of b + chain start, of steps
+};
+
+} // namespace smallmlt
