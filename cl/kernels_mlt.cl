@@ -6,7 +6,9 @@
 
 #pragma OPENCL EXTENSION cl_khr_int64_base_atomics : enable
 
-inline bool mlt_finite(float3 f) { return isfinite(f.x) && isfinite(f.y) && isfinite(f.z); }
+inline bool mlt_finite(float3 f) {
+    return isfinite(f.x) && isfinite(f.y) && isfinite(f.z);
+}
 
 /* A non-finite F is dropped and counted: it contributes nothing and a chain
  * never moves to it. */
@@ -72,14 +74,15 @@ __kernel void mlt_step(__global const Triangle* tris, __global const BvhNode* no
     ChainValue x = values[c];
     ulong key = rng_key(seed, c, iteration);
     bool large = rng_u32(key, MLT_DIM_LARGE) < large_threshold;
-    SampleSource src = smp_chain(state, c, num_chains, key, large ? SMP_LARGE : SMP_SMALL, x.bounces);
+    SampleSource src =
+        smp_chain(state, c, num_chains, key, large ? SMP_LARGE : SMP_SMALL, x.bounces);
     MltSample y = mlt_checked(mlt_evaluate(&sc, &frame, &src), stats);
 
     float3 fx = (float3)(x.rgb[0], x.rgb[1], x.rgb[2]);
     float ix = path_luminance(fx), iy = path_luminance(y.f);
     float a = ix > 0.0f ? fmin(1.0f, iy / ix) : 1.0f;
     uint x_pixel = mlt_pixel(&frame, pss_load(state, c, num_chains, layout_film(0u)),
-                            pss_load(state, c, num_chains, layout_film(1u)));
+                             pss_load(state, c, num_chains, layout_film(1u)));
     mlt_splat(splat, y.pixel, y.f, a);
     mlt_splat(splat, x_pixel, fx, 1.0f - a);
 

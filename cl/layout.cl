@@ -36,7 +36,9 @@ inline LayoutSlot layout_slot(uint bounce, int slot) {
 
 /* v / 2^bits, exact in float for bits <= 24; 2^-bits is built from its
  * exponent bits, as bits is often not a compile-time constant. */
-inline float layout_unit(uint v, uint bits) { return (float)v * as_float((127u - bits) << 23); }
+inline float layout_unit(uint v, uint bits) {
+    return (float)v * as_float((127u - bits) << 23);
+}
 
 /* Probability p rounded up to the grid of a `bits`-wide number, so that the
  * event v < p_q * 2^bits has probability exactly p_q for uniform v. */

@@ -28,10 +28,12 @@ inline float path_max3(float3 v) {
     return fmax(v.x, fmax(v.y, v.z));
 }
 
+#if LAYOUT_BOUNCE_DIMS > 0
 /* Number `slot` of bounce `bounce` from the sample source. */
 inline float path_number(SampleSource* src, uint bounce, int slot) {
     return smp_uniform(src, bounce, layout_slot(bounce, slot));
 }
+#endif
 
 /* Direct light at a diffuse vertex x with normal n_wo (facing the viewer). */
 float3 path_next_event(const SceneView* sc, SampleSource* src, uint bounce, float3 x, float3 n_wo,
@@ -40,7 +42,8 @@ float3 path_next_event(const SceneView* sc, SampleSource* src, uint bounce, floa
     uint pick = 0;
 #if SLOT_LIGHT_PICK >= 0
     float u_pick = path_number(src, bounce, SLOT_LIGHT_PICK);
-    pick = light_pick(sc->lights, sc->num_lights, (uint)(u_pick * (float)(1u << SLOT_LIGHT_PICK_BITS)));
+    pick = light_pick(sc->lights, sc->num_lights,
+                      (uint)(u_pick * (float)(1u << SLOT_LIGHT_PICK_BITS)));
 #endif
     const __global Triangle* lt = &sc->tris[sc->lights[pick].triangle];
     float u1 = path_number(src, bounce, SLOT_LIGHT_U);

@@ -61,7 +61,9 @@ inline float mlt_small_offset(uint r) {
 
 #ifndef PSS_FLOAT32
 
-inline float mlt_fresh(uint r, uint bits) { return layout_unit(r >> (32u - bits), bits); }
+inline float mlt_fresh(uint r, uint bits) {
+    return layout_unit(r >> (32u - bits), bits);
+}
 
 /* x moved by the small-step offset on the slot's grid, wrapping around [0,1). */
 inline float mlt_perturb(float x, uint r, uint bits) {
@@ -74,7 +76,9 @@ inline float mlt_perturb(float x, uint r, uint bits) {
 
 #else
 
-inline float mlt_fresh(uint r, uint bits) { return (float)(r >> 8) * (1.0f / 16777216.0f); }
+inline float mlt_fresh(uint r, uint bits) {
+    return (float)(r >> 8) * (1.0f / 16777216.0f);
+}
 
 inline float mlt_perturb(float x, uint r, uint bits) {
     float d = mlt_small_offset(r);
@@ -106,7 +110,8 @@ inline void mlt_commit_slot(const SampleSource* s, uint bounce, LayoutSlot at) {
 /* Makes the proposal the chain's state: stores its numbers for the film and
  * the first `bounces` bounces. */
 inline void mlt_commit(const SampleSource* s, uint bounces) {
-    for (uint i = 0; i < LAYOUT_CAMERA_DIMS; ++i) mlt_commit_slot(s, 0u, layout_film(i));
+    for (uint i = 0; i < LAYOUT_CAMERA_DIMS; ++i)
+        mlt_commit_slot(s, 0u, layout_film(i));
 #if LAYOUT_BOUNCE_DIMS > 0
     for (uint b = 0; b < bounces; ++b)
         for (int slot = 0; slot < (int)LAYOUT_BOUNCE_DIMS; ++slot)

@@ -111,9 +111,12 @@ RenderOptions parse_render(ArgReader& r) {
         std::string flag = arg.substr(0, arg.find('='));
         if (flag == "--method") {
             std::string m = r.value(flag, arg);
-            if (m == "pt") o.method = Method::Pt;
-            else if (m == "mlt") o.method = Method::Mlt;
-            else throw UsageError("--method: '" + m + "' is not a method (pt or mlt)");
+            if (m == "pt")
+                o.method = Method::Pt;
+            else if (m == "mlt")
+                o.method = Method::Mlt;
+            else
+                throw UsageError("--method: '" + m + "' is not a method (pt or mlt)");
         } else if (flag == "--large-step") {
             o.large_step = float(to_unit_interval(flag, r.value(flag, arg)));
         } else if (flag == "--threads") {

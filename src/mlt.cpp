@@ -33,12 +33,12 @@ const DeviceScene& require_atomics(const ClContext& cl, const DeviceScene& ds) {
 
 } // namespace
 
-const std::vector<std::string>& mlt_program_files() {
-    static const std::vector<std::string> files = {
-        "cl/shared_types.h", "cl/rng.cl",    "cl/layout.cl", "cl/pss.cl",
-        "cl/sample_mlt.cl",  "cl/geometry.cl", "cl/bvh.cl",  "cl/bsdf.cl",
-        "cl/light.cl",       "cl/path.cl",   "cl/camera.cl", "cl/eval_path.cl",
-        "cl/kernels_mlt.cl"};
+std::vector<std::string> mlt_program_files(const MltOptions& opt) {
+    std::vector<std::string> files = {
+        "cl/shared_types.h", "cl/rng.cl",   "cl/layout.cl",     "cl/pss.cl",   "cl/sample_mlt.cl",
+        "cl/geometry.cl",    "cl/bvh.cl",   "cl/bsdf.cl",       "cl/light.cl", "cl/path.cl",
+        "cl/camera.cl",      opt.evaluator, "cl/kernels_mlt.cl"};
+    files.insert(files.end(), opt.extra_files.begin(), opt.extra_files.end());
     return files;
 }
 
@@ -49,7 +49,7 @@ std::uint32_t mlt_words_per_chain(const SampleLayout& layout, bool float32_state
 
 MltRenderer::MltRenderer(const ClContext& cl, const DeviceScene& ds, const MltOptions& opt)
     : cl_(cl), ds_(require_atomics(cl, ds)), opt_(opt),
-      program_(cl.build(mlt_program_files(), program_defines(ds, opt))),
+      program_(cl.build(mlt_program_files(opt), program_defines(ds, opt))),
       k_lum_(program_.p, "mlt_luminance"), k_init_(program_.p, "mlt_init"),
       k_step_(program_.p, "mlt_step"), scene_(cl, ds),
       state_(cl, CL_MEM_READ_WRITE,
@@ -133,16 +133,17 @@ MltStats MltRenderer::stats() const {
 std::string MltRenderer::summary(double) const {
     MltStats s = stats();
     char buf[320];
-    std::snprintf(buf, sizeof buf,
-                  "%u chains x %u steps (state %u B/chain), %.3f M mutations/s, %.3f M rays/s (steps only; b and "
-                  "chain start %.2f s), acceptance %.1f%%, large steps %.1f%%, b = %.5g (+-%.2f%%), "
-                  "%llu non-finite dropped",
-                  opt_.chains, iterations_, state_bytes_per_chain(),
-                  double(s.mutations) / step_seconds_ * 1e-6,
-                  double(s.rays) / step_seconds_ * 1e-6, prepare_seconds_,
-                  s.mutations ? 100.0 * double(s.accepted) / double(s.mutations) : 0.0,
-                  s.mutations ? 100.0 * double(s.large) / double(s.mutations) : 0.0, b_,
-                  100.0 * b_rel_error_, static_cast<unsigned long long>(s.nonfinite));
+    std::snprintf(
+        buf, sizeof buf,
+        "%u chains x %u steps (state %u B/chain), %.3f M mutations/s, %.3f M rays/s (steps only; b "
+        "and "
+        "chain start %.2f s), acceptance %.1f%%, large steps %.1f%%, b = %.5g (+-%.2f%%), "
+        "%llu non-finite dropped",
+        opt_.chains, iterations_, state_bytes_per_chain(),
+        double(s.mutations) / step_seconds_ * 1e-6, double(s.rays) / step_seconds_ * 1e-6,
+        prepare_seconds_, s.mutations ? 100.0 * double(s.accepted) / double(s.mutations) : 0.0,
+        s.mutations ? 100.0 * double(s.large) / double(s.mutations) : 0.0, b_, 100.0 * b_rel_error_,
+        static_cast<unsigned long long>(s.nonfinite));
     return buf;
 }
 
@@ -153,7 +154,8 @@ Image MltRenderer::image() const {
     double mutations = double(iterations_) * opt_.chains;
     if (mutations == 0) return img;
     double scale = b_ * double(pixels()) / mutations / double(1u << SPLAT_FRAC_BITS);
-    for (std::size_t i = 0; i < acc.size(); ++i) img.rgb[i] = float(double(acc[i]) * scale);
+    for (std::size_t i = 0; i < acc.size(); ++i)
+        img.rgb[i] = float(double(acc[i]) * scale);
     return img;
 }
 

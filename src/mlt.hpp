@@ -14,14 +14,18 @@ namespace smallmlt {
 
 struct MltOptions {
     std::uint32_t chains = 1u << 16;
-    float large_step = 0.5f;         // probability that a step is large
+    float large_step = 0.5f; // probability that a step is large
     std::uint64_t seed = 1;
     std::uint32_t b_samples = 1u << 18; // OMC samples that estimate b
-    bool float32_states = false;     // unpacked float32 states (reference build)
+    bool float32_states = false;        // unpacked float32 states (reference build)
+    // The file that defines mlt_evaluate: cl/eval_path.cl renders the scene;
+    // the sampler tests use cl/eval_target.cl, a known 2D target.
+    std::string evaluator = "cl/eval_path.cl";
+    std::vector<std::string> extra_files; // appended to the program (test probes)
 };
 
 // Kernel files of the MLT program, in build order.
-const std::vector<std::string>& mlt_program_files();
+std::vector<std::string> mlt_program_files(const MltOptions& opt);
 
 // Words of 32 bits that one chain's state takes for this layout.
 std::uint32_t mlt_words_per_chain(const SampleLayout& layout, bool float32_states);
@@ -39,7 +43,9 @@ class MltRenderer : public Integrator {
     std::uint64_t units_for_spp(std::uint32_t spp) const override {
         return (std::uint64_t(spp) * pixels() + opt_.chains - 1) / opt_.chains;
     }
-    double spp_done() const override { return double(iterations_) * opt_.chains / double(pixels()); }
+    double spp_done() const override {
+        return double(iterations_) * opt_.chains / double(pixels());
+    }
     std::string summary(double seconds) const override;
 
     // b = mean luminance of opt.b_samples OMC samples; relative standard error.

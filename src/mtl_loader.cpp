@@ -4,7 +4,6 @@
 #include "scene.hpp"
 #include "text_parse.hpp"
 
-
 namespace smallmlt {
 
 namespace {

@@ -25,8 +25,8 @@ void PathTracer::add_samples(std::uint32_t n) {
     if (n == 0) return;
     cl_ulong seed = seed_;
     cl_uint first = spp_, count = n;
-    kernel_.set_args(scene_.tris, scene_.nodes, scene_.mats, scene_.lights, ds_.frame, seed, first, count, accum_,
-                     ray_count_);
+    kernel_.set_args(scene_.tris, scene_.nodes, scene_.mats, scene_.lights, ds_.frame, seed, first,
+                     count, accum_, ray_count_);
     kernel_.run(cl_, pixels());
     spp_ += n;
 }
@@ -34,7 +34,8 @@ void PathTracer::add_samples(std::uint32_t n) {
 std::string PathTracer::summary(double seconds) const {
     char buf[160];
     std::snprintf(buf, sizeof buf, "%u spp, %.3f M paths/s, %.3f M rays/s", spp_,
-                  double(spp_) * double(pixels()) / seconds * 1e-6, double(rays()) / seconds * 1e-6);
+                  double(spp_) * double(pixels()) / seconds * 1e-6,
+                  double(rays()) / seconds * 1e-6);
     return buf;
 }
 

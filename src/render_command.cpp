@@ -70,9 +70,9 @@ int run_render(const RenderOptions& o) {
         if (o.spp) {
             if (done >= target) break;
             n = std::min(n, target - done);
-            progress.update(double(done) / double(target),
-                            std::to_string(int(method->spp_done())) + "/" +
-                                std::to_string(*o.spp) + " per pixel");
+            progress.update(double(done) / double(target), std::to_string(int(method->spp_done())) +
+                                                               "/" + std::to_string(*o.spp) +
+                                                               " per pixel");
         } else {
             if (elapsed >= *o.time_s) break;
             progress.update(elapsed / *o.time_s,
@@ -91,12 +91,12 @@ int run_render(const RenderOptions& o) {
     progress.finish();
 
     Image img = method->image();
-    for (const std::string& f : o.outs) write_image(img, f);
+    for (const std::string& f : o.outs)
+        write_image(img, f);
     if (!o.quiet) {
         std::printf("%s: %dx%d, depth %d, %s: %.2f s (+%.2f s setup), %s\n", o.scene.c_str(),
-                    scene.width, scene.height, scene.depth,
-                    o.method == Method::Pt ? "pt" : "mlt", render_s, setup_s,
-                    method->summary(render_s).c_str());
+                    scene.width, scene.height, scene.depth, o.method == Method::Pt ? "pt" : "mlt",
+                    render_s, setup_s, method->summary(render_s).c_str());
         if (scene.dropped_degenerate)
             std::printf("note: %d zero-area triangle(s) left out\n", scene.dropped_degenerate);
     }

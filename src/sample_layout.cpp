@@ -66,7 +66,8 @@ std::string SampleLayout::defines() const {
                 offset += bits[s];
             }
     if (bounce_dims > 0) {
-        d << "__constant uint layout_slot_bits[" << bounce_dims << "] = {" << slot_bits.str() << "};\n";
+        d << "__constant uint layout_slot_bits[" << bounce_dims << "] = {" << slot_bits.str()
+          << "};\n";
         d << "__constant uint layout_slot_offset[" << bounce_dims << "] = {" << slot_offset.str()
           << "};\n";
     }

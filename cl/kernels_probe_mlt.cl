@@ -1,0 +1,78 @@
+/* Probe kernels for the MLT tests: packing round trips, lazy against eager
+ * proposals, and where each chain is. Built after the MLT program's files. */
+
+/* Number of numbers in a vector of `depth` bounces. */
+inline uint probe_dims(uint depth) {
+    return LAYOUT_CAMERA_DIMS + depth * LAYOUT_BOUNCE_DIMS;
+}
+
+/* Slot of number d (film numbers first, then bounce by bounce). */
+inline LayoutSlot probe_slot(uint d) {
+#if LAYOUT_BOUNCE_DIMS > 0
+    if (d >= LAYOUT_CAMERA_DIMS)
+        return layout_slot((d - LAYOUT_CAMERA_DIMS) / LAYOUT_BOUNCE_DIMS,
+                           (int)((d - LAYOUT_CAMERA_DIMS) % LAYOUT_BOUNCE_DIMS));
+#endif
+    return layout_film(d);
+}
+
+/* Chain c stores values[c * dims + d] (integers below 2^bits) in every
+ * number d, then reads them all back into out. */
+__kernel void probe_pss_roundtrip(__global uint* state, __global const uint* values,
+                                  __global uint* out, const uint num_chains, const uint depth) {
+    uint c = get_global_id(0);
+    if (c >= num_chains) return;
+    uint dims = probe_dims(depth);
+    for (uint d = 0; d < dims; ++d) {
+        LayoutSlot at = probe_slot(d);
+        pss_store(state, c, num_chains, at, layout_unit(values[c * dims + d], at.bits));
+    }
+    for (uint d = 0; d < dims; ++d) {
+        LayoutSlot at = probe_slot(d);
+        out[c * dims + d] = (uint)(pss_load(state, c, num_chains, at) * (float)(1u << at.bits));
+    }
+}
+
+/* For chain c with proposal key rng_key(seed, c, 1) (a large step for odd c):
+ * out[3c] = F of the lazily evaluated proposal; out[3c + 1] = F of the same
+ * proposal materialized number by number into `eager` and replayed;
+ * out[3c + 2] = F of the chain's state after committing the proposal,
+ * replayed. */
+__kernel void probe_lazy_eager(__global const Triangle* tris, __global const BvhNode* nodes,
+                               __global const Material* mats, __global const LightEntry* lights,
+                               const Frame frame, __global uint* state,
+                               __global const ChainValue* values, __global uint* eager,
+                               const uint num_chains, const ulong seed, __global float4* out) {
+    uint c = get_global_id(0);
+    if (c >= num_chains) return;
+    SceneView sc = path_scene(tris, nodes, mats, lights, &frame);
+    uint mode = (c & 1u) ? SMP_LARGE : SMP_SMALL;
+    SampleSource lazy =
+        smp_chain(state, c, num_chains, rng_key(seed, c, 1u), mode, values[c].bounces);
+    MltSample y = mlt_evaluate(&sc, &frame, &lazy);
+    out[3u * c] = (float4)(y.f, as_float(y.bounces));
+
+    for (uint d = 0; d < probe_dims(frame.depth); ++d) {
+        LayoutSlot at = probe_slot(d);
+        uint bounce =
+            d < LAYOUT_CAMERA_DIMS ? 0u : (d - LAYOUT_CAMERA_DIMS) / max(LAYOUT_BOUNCE_DIMS, 1u);
+        pss_store(eager, c, num_chains, at, mlt_propose(&lazy, bounce, at));
+    }
+    SampleSource replay_eager = smp_chain(eager, c, num_chains, 0ul, SMP_REPLAY, frame.depth);
+    MltSample e = mlt_evaluate(&sc, &frame, &replay_eager);
+    out[3u * c + 1u] = (float4)(e.f, as_float(e.bounces));
+
+    mlt_commit(&lazy, y.bounces);
+    SampleSource replay_state = smp_chain(state, c, num_chains, 0ul, SMP_REPLAY, y.bounces);
+    MltSample r = mlt_evaluate(&sc, &frame, &replay_state);
+    out[3u * c + 2u] = (float4)(r.f, as_float(r.bounces));
+}
+
+/* Pixel (histogram bin) of each chain's current state. */
+__kernel void probe_chain_pixel(const Frame frame, __global const uint* state,
+                                const uint num_chains, __global uint* out) {
+    uint c = get_global_id(0);
+    if (c >= num_chains) return;
+    out[c] = mlt_pixel(&frame, pss_load(state, c, num_chains, layout_film(0u)),
+                       pss_load(state, c, num_chains, layout_film(1u)));
+}

@@ -1,0 +1,333 @@
+// Primary-sample-space MLT: packed storage is exact, lazy proposals are the
+// eager ones, the sampler reproduces a known target, and renders agree with
+// path tracing.
+#include "mlt.hpp"
+#include "sample_layout.hpp"
+#include "test_support.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+#include <random>
+
+using namespace smallmlt;
+
+namespace {
+
+const char* kProbeFile = "cl/kernels_probe_mlt.cl";
+
+// A scene with no geometry whose layout is `f`: enough for probe kernels and
+// for the known-target evaluator.
+DeviceScene layout_only_scene(const SceneFeatures& f, int width, int height) {
+    DeviceScene ds;
+    ds.layout = make_layout(f);
+    ds.frame.width = width;
+    ds.frame.height = height;
+    ds.frame.depth = f.depth;
+    return ds;
+}
+
+// Upper critical value of chi-square with `df` degrees of freedom at
+// significance 0.001 (Wilson-Hilferty; accurate to a fraction of a percent
+// for df > 30).
+double chi2_critical_001(double df) {
+    const double z = 3.0902; // standard normal quantile at 0.999
+    double a = 2.0 / (9.0 * df);
+    return df * std::pow(1.0 - a + z * std::sqrt(a), 3.0);
+}
+
+std::uint32_t bits_of(const SampleLayout& l, std::uint32_t d) {
+    if (d < std::uint32_t(kCameraDims)) return kHighBits;
+    std::uint32_t slot_index = (d - kCameraDims) % l.bounce_dims;
+    for (int s = 0; s < kSlotCount; ++s)
+        if (l.index[s] == int(slot_index)) return l.bits[s];
+    return 0;
+}
+
+void check_roundtrip(const SceneFeatures& f, bool float32) {
+    DeviceScene ds = layout_only_scene(f, 4, 4);
+    MltOptions opt;
+    opt.chains = 16;
+    opt.float32_states = float32;
+    opt.extra_files = {kProbeFile};
+    MltRenderer mlt(test::cl(), ds, opt);
+    const std::uint32_t dims = ds.layout.vector_dims(), chains = opt.chains;
+    std::vector<std::uint32_t> values(std::size_t(dims) * chains);
+    std::mt19937 rng(3);
+    for (std::uint32_t c = 0; c < chains; ++c)
+        for (std::uint32_t d = 0; d < dims; ++d) {
+            std::uint32_t max = (1u << bits_of(ds.layout, d)) - 1u;
+            values[c * dims + d] = c == 0 ? 0u : c == 1 ? max : rng() & max;
+        }
+    ClBuffer in(test::cl(), CL_MEM_READ_ONLY, values.size() * 4, values.data());
+    ClBuffer out(test::cl(), CL_MEM_WRITE_ONLY, values.size() * 4);
+    ClKernel k(mlt.program(), "probe_pss_roundtrip");
+    k.set_args(mlt.state(), in, out, cl_uint(chains), cl_uint(f.depth));
+    k.run(test::cl(), chains);
+    std::vector<std::uint32_t> back(values.size());
+    out.read(test::cl(), back.data());
+    for (std::size_t i = 0; i < values.size(); ++i)
+        ASSERT_EQ(back[i], values[i]) << "chain " << i / dims << " number " << i % dims;
+}
+
+} // namespace
+
+// Every value written to every slot of every bounce reads back bit-exactly,
+// including 0 and the largest value below 1 (chains 0 and 1), with slots of
+// 24, 16 and a widened 17 bits packed across word boundaries.
+TEST(MltPacking, RoundTripIsBitExact) {
+    check_roundtrip({true, false, true, 2, 24}, false);  // 4 x 24 + 3 x 16 bits
+    check_roundtrip({true, true, true, 300, 24}, false); // light pick widened to 17 bits
+    check_roundtrip({false, true, false, 1, 5}, false);  // roulette only: 16 bits a bounce
+    check_roundtrip({true, false, true, 300, 24}, true); // the unpacked float32 build
+}
+
+TEST(MltPacking, StateSizeFollowsTheLayout) {
+    SampleLayout water = make_layout({true, false, true, 2, 24});
+    EXPECT_EQ(water.vector_bits(), 2 * 24 + 24 * (4 * 24 + 3 * 16));
+    EXPECT_EQ(mlt_words_per_chain(water, false), std::uint32_t((water.vector_bits() + 31) / 32));
+    EXPECT_EQ(mlt_words_per_chain(water, true), std::uint32_t(water.vector_dims()));
+}
+
+// For fixed keys, the path traced from a lazily evaluated proposal equals the
+// path traced from the same proposal materialized number by number (same F,
+// bit for bit), and committing the proposal stores exactly that path.
+TEST(MltLazy, LazyProposalEqualsEagerAndCommitStoresIt) {
+    DeviceScene ds = prepare_scene(test::scene("cornell-water", 32, 32));
+    MltOptions opt;
+    opt.chains = 1024;
+    opt.extra_files = {kProbeFile};
+    MltRenderer mlt(test::cl(), ds, opt);
+    mlt.init_chains();
+    ClBuffer eager(test::cl(), CL_MEM_READ_WRITE, mlt.state().bytes());
+    ClBuffer out(test::cl(), CL_MEM_WRITE_ONLY, std::size_t(opt.chains) * 3 * sizeof(cl_float4));
+    SceneBuffers sb(test::cl(), ds);
+    ClKernel k(mlt.program(), "probe_lazy_eager");
+    k.set_args(sb.tris, sb.nodes, sb.mats, sb.lights, ds.frame, mlt.state(), mlt.values(), eager,
+               cl_uint(opt.chains), cl_ulong(99), out);
+    k.run(test::cl(), opt.chains);
+    std::vector<cl_float4> f(std::size_t(opt.chains) * 3);
+    out.read(test::cl(), f.data());
+    int lit = 0;
+    for (std::uint32_t c = 0; c < opt.chains; ++c) {
+        const cl_float4 &lazy = f[3 * c], &eager_f = f[3 * c + 1], &stored = f[3 * c + 2];
+        EXPECT_EQ(std::memcmp(lazy.s, eager_f.s, 12), 0) << "chain " << c;
+        EXPECT_EQ(std::memcmp(lazy.s, stored.s, 16), 0) << "chain " << c;
+        lit += lazy.s[0] + lazy.s[1] + lazy.s[2] > 0;
+    }
+    EXPECT_GT(lit, int(opt.chains) / 10) << "too few lit paths to test anything";
+}
+
+// f(x, y) = (1 + 3x)(1 + sin^2(2 pi y)), zero where x, y < 1/4 (cl/eval_target.cl):
+// its integral over bin (bx, by) of a 16 x 16 grid (bins never straddle the
+// zero region's edges).
+double target_bin_integral(int bx, int by) {
+    double x0 = bx / 16.0, x1 = (bx + 1) / 16.0, y0 = by / 16.0, y1 = (by + 1) / 16.0;
+    if (x1 <= 0.25 && y1 <= 0.25) return 0.0;
+    auto fx = [](double x) { return x + 1.5 * x * x; };
+    auto fy = [](double y) { return 1.5 * y - std::sin(4.0 * M_PI * y) / (8.0 * M_PI); };
+    return (fx(x1) - fx(x0)) * (fy(y1) - fy(y0));
+}
+
+double target_integral() {
+    double sum = 0;
+    for (int by = 0; by < 16; ++by)
+        for (int bx = 0; bx < 16; ++bx)
+            sum += target_bin_integral(bx, by);
+    return sum;
+}
+
+// The chains' states after many steps are independent draws from the target:
+// their histogram over 16 x 16 bins passes a chi-square test at significance
+// 0.001, and no chain sits where the target is zero.
+TEST(MltSampler, ChainStatesFollowAKnownTarget) {
+    const int bins = 16;
+    DeviceScene ds = layout_only_scene({}, bins, bins);
+    MltOptions opt;
+    opt.chains = 16384;
+    opt.large_step = 0.3f;
+    opt.seed = 5;
+    opt.evaluator = "cl/eval_target.cl";
+    opt.extra_files = {kProbeFile};
+    MltRenderer mlt(test::cl(), ds, opt);
+    mlt.init_chains();
+    mlt.step(300);
+    ClBuffer out(test::cl(), CL_MEM_WRITE_ONLY, opt.chains * sizeof(cl_uint));
+    ClKernel k(mlt.program(), "probe_chain_pixel");
+    k.set_args(ds.frame, mlt.state(), cl_uint(opt.chains), out);
+    k.run(test::cl(), opt.chains);
+    std::vector<cl_uint> pixel(opt.chains);
+    out.read(test::cl(), pixel.data());
+    std::vector<double> count(bins * bins, 0.0);
+    for (cl_uint p : pixel)
+        count[p] += 1;
+
+    double total = target_integral(), chi2 = 0;
+    int df = -1;
+    for (int by = 0; by < bins; ++by)
+        for (int bx = 0; bx < bins; ++bx) {
+            double p = target_bin_integral(bx, by) / total;
+            double n = count[by * bins + bx];
+            if (p == 0) {
+                EXPECT_EQ(n, 0) << "a chain sits where the target is zero";
+                continue;
+            }
+            double e = p * opt.chains;
+            chi2 += (n - e) * (n - e) / e;
+            ++df;
+        }
+    EXPECT_LT(chi2, chi2_critical_001(df)) << "df " << df;
+}
+
+// The splatted image of the known target matches its bin means. Each of R
+// independent renders (own seed, own b) gives every bin a value; with the
+// replicas' mean m_b and standard error s_b, z_b = (m_b - truth_b) / s_b is
+// t-distributed with R - 1 degrees of freedom, so T = sum z_b^2 over the
+// B bins has mean B (R-1)/(R-3) and variance B Var(t^2). T must stay below
+// its mean plus 3.3 standard deviations (about 0.001 one-sided), and bins
+// where the target is zero get exactly nothing.
+TEST(MltSampler, SplatImageMatchesTheTarget) {
+    const int bins = 16, replicas = 16;
+    DeviceScene ds = layout_only_scene({}, bins, bins);
+    std::vector<double> sum(bins * bins, 0.0), sum2(bins * bins, 0.0);
+    for (int r = 0; r < replicas; ++r) {
+        MltOptions opt;
+        opt.chains = 1024;
+        opt.large_step = 0.3f;
+        opt.seed = 100 + r;
+        opt.b_samples = 1u << 16;
+        opt.evaluator = "cl/eval_target.cl";
+        MltRenderer mlt(test::cl(), ds, opt);
+        mlt.prepare();
+        mlt.step(400);
+        Image img = mlt.image();
+        for (int i = 0; i < bins * bins; ++i) {
+            sum[i] += img.rgb[3 * i];
+            sum2[i] += double(img.rgb[3 * i]) * img.rgb[3 * i];
+        }
+    }
+    const double nu = replicas - 1;
+    double t_stat = 0;
+    int used = 0;
+    for (int by = 0; by < bins; ++by)
+        for (int bx = 0; bx < bins; ++bx) {
+            int i = by * bins + bx;
+            double truth = target_bin_integral(bx, by) * bins * bins;
+            double mean = sum[i] / replicas;
+            if (truth == 0) {
+                EXPECT_EQ(sum[i], 0.0) << "splats where the target is zero";
+                continue;
+            }
+            double var = (sum2[i] - replicas * mean * mean) / (replicas - 1);
+            double se = std::sqrt(std::max(var, 0.0) / replicas);
+            ASSERT_GT(se, 0.0);
+            double z = (mean - truth) / se;
+            t_stat += z * z;
+            ++used;
+        }
+    double mean_t2 = nu / (nu - 2);
+    double var_t2 = 2 * nu * nu * (nu - 1) / ((nu - 2) * (nu - 2) * (nu - 4));
+    double limit = used * mean_t2 + 3.3 * std::sqrt(used * var_t2);
+    std::printf("T = %.1f, expected %.1f, limit %.1f\n", t_stat, used * mean_t2, limit);
+    EXPECT_LT(t_stat, limit) << "sum of squared z over " << used << " bins";
+}
+
+namespace {
+
+double mse(const Image& a, const Image& b) {
+    double s = 0;
+    for (std::size_t i = 0; i < a.rgb.size(); ++i)
+        s += double(a.rgb[i] - b.rgb[i]) * (a.rgb[i] - b.rgb[i]);
+    return s / double(a.rgb.size());
+}
+
+// Path-traced reference: 32 x 32 pixels at 2048 samples each (2.1 M paths,
+// a relative standard error of the image mean near 0.2% on these scenes).
+Image reference(const DeviceScene& ds) {
+    return test::render_pt(ds, 4242, 2048);
+}
+
+} // namespace
+
+// The MLT image mean is b times the fraction of mutations that splat, and b
+// is an OMC estimate of the film's mean. With 2^21 samples for b (0.36% and
+// 0.47% relative standard error on cornell and cornell-glass, reported by the
+// renderer) and the reference above (0.2-0.3%), the means must agree within
+// 1%, about two combined standard errors. The error against the reference
+// must fall as the chains run.
+class MltRender : public ::testing::TestWithParam<const char*> {};
+
+TEST_P(MltRender, MeanMatchesPathTracingAndErrorFalls) {
+    DeviceScene ds = prepare_scene(test::scene(GetParam(), 32, 32));
+    Image ref = reference(ds);
+    MltOptions opt;
+    opt.chains = 4096;
+    opt.seed = 7;
+    opt.b_samples = 1u << 21;
+    MltRenderer mlt(test::cl(), ds, opt);
+    mlt.prepare();
+    std::vector<double> errors;
+    for (std::uint32_t steps : {8u, 24u, 96u}) {
+        mlt.step(steps);
+        errors.push_back(mse(mlt.image(), ref));
+    }
+    double m = mlt.image().mean_luminance(), r = ref.mean_luminance();
+    std::printf("%s: b %.5f (+-%.2f%%), MLT mean %.5f, PT mean %.5f, MSE %.4g %.4g %.4g\n",
+                GetParam(), mlt.b(), 100 * mlt.b_rel_error(), m, r, errors[0], errors[1],
+                errors[2]);
+    EXPECT_NEAR(m, r, 0.01 * r);
+    EXPECT_LT(mlt.b_rel_error(), 0.005) << "b too noisy for a 1% comparison";
+    EXPECT_GT(errors[0], errors[1]);
+    EXPECT_GT(errors[1], errors[2]);
+}
+
+INSTANTIATE_TEST_SUITE_P(Scenes, MltRender, ::testing::Values("cornell", "cornell-glass"));
+
+// Storage precision does not bias: renders with packed 24/16-bit states and
+// with unpacked float32 states (same kernel, PSS_FLOAT32) differ only by
+// noise. Six replicas of each (own seeds) give per-quadrant shares of the
+// splats (image / b, so that b's own noise, common to a whole image, does not
+// hide a difference in where the chains go); Welch's t for each of the 4
+// quadrants must stay below 3.6 (two-sided 0.0025 at about 10 degrees of
+// freedom: 0.01 over the four, Bonferroni).
+TEST(MltPrecision, PackedAndFloat32StatesAgreeWithinNoise) {
+    DeviceScene ds = prepare_scene(test::scene("cornell-glass", 32, 32));
+    const int replicas = 6;
+    double sum[2][4] = {}, sum2[2][4] = {};
+    for (int build = 0; build < 2; ++build)
+        for (int r = 0; r < replicas; ++r) {
+            MltOptions opt;
+            opt.chains = 2048;
+            opt.seed = 300 + r + 50 * build;
+            opt.b_samples = 1u << 14;
+            opt.float32_states = build == 1;
+            MltRenderer mlt(test::cl(), ds, opt);
+            mlt.prepare();
+            mlt.step(64);
+            Image img = mlt.image();
+            double q[4] = {};
+            for (int y = 0; y < 32; ++y)
+                for (int x = 0; x < 32; ++x) {
+                    std::size_t p = std::size_t(y) * 32 + x;
+                    q[(y / 16) * 2 + x / 16] +=
+                        (0.2126 * img.rgb[3 * p] + 0.7152 * img.rgb[3 * p + 1] +
+                         0.0722 * img.rgb[3 * p + 2]) /
+                        256.0 / mlt.b();
+                }
+            for (int k = 0; k < 4; ++k) {
+                sum[build][k] += q[k];
+                sum2[build][k] += q[k] * q[k];
+            }
+        }
+    for (int k = 0; k < 4; ++k) {
+        double m[2], v[2];
+        for (int b = 0; b < 2; ++b) {
+            m[b] = sum[b][k] / replicas;
+            v[b] = (sum2[b][k] - replicas * m[b] * m[b]) / (replicas - 1);
+        }
+        double t = (m[0] - m[1]) / std::sqrt(v[0] / replicas + v[1] / replicas);
+        std::printf("quadrant %d: packed %.5f, float32 %.5f, t %.2f\n", k, m[0], m[1], t);
+        EXPECT_LT(std::fabs(t), 3.6) << "quadrant " << k;
+    }
+}
