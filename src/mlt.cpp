@@ -20,7 +20,9 @@ double seconds_since(std::chrono::steady_clock::time_point t0) {
 }
 
 std::string program_defines(const DeviceScene& ds, const MltOptions& opt) {
-    return ds.layout.defines() + (opt.float32_states ? "#define PSS_FLOAT32 1\n" : "");
+    std::string d = ds.layout.defines();
+    if (opt.float32_states) d += "#define PSS_FLOAT32 1\n";
+    return d;
 }
 
 const DeviceScene& require_atomics(const ClContext& cl, const DeviceScene& ds) {
@@ -109,8 +111,9 @@ void MltRenderer::step(std::uint32_t n) {
         cl_uint iteration = ++iterations_;
         k_step_.set_args(scene_.tris, scene_.nodes, scene_.mats, scene_.lights, ds_.frame, state_,
                          values_, cl_uint(opt_.chains), seed, iteration, threshold, splat_, stats_);
-        k_step_.run(cl_, opt_.chains);
+        k_step_.enqueue(cl_, opt_.chains);
     }
+    cl_.finish("kernel mlt_step over " + std::to_string(opt_.chains) + " chains");
     step_seconds_ += seconds_since(t0);
 }
 

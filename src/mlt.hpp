@@ -9,6 +9,7 @@
 #include "scene_buffers.hpp"
 
 #include <cstdint>
+#include <optional>
 
 namespace smallmlt {
 

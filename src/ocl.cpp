@@ -259,17 +259,30 @@ void ClKernel::set_raw(cl_uint i, std::size_t bytes, const void* v) {
                          ") failed: " + cl_error_name(err));
 }
 
-void ClKernel::run(const ClContext& cl, std::size_t items) const {
+namespace {
+constexpr std::size_t kWorkGroup = 64;
+}
+
+void ClKernel::enqueue(const ClContext& cl, std::size_t items) const {
     if (items == 0) return;
-    std::size_t local = 64;
+    std::size_t local = kWorkGroup;
     std::size_t global = (items + local - 1) / local * local;
     cl_int err =
         clEnqueueNDRangeKernel(cl.queue(), k_, 1, nullptr, &global, &local, 0, nullptr, nullptr);
-    if (err == CL_SUCCESS) err = clFinish(cl.queue());
     if (err != CL_SUCCESS)
         throw InputError("kernel " + name_ + " over " + std::to_string(global) +
                          " work-items (work-group " + std::to_string(local) +
                          ") failed: " + cl_error_name(err));
+}
+
+void ClKernel::run(const ClContext& cl, std::size_t items) const {
+    enqueue(cl, items);
+    cl.finish("kernel " + name_ + " over " + std::to_string(items) + " work-items");
+}
+
+void ClContext::finish(const std::string& what) const {
+    cl_int err = clFinish(queue_);
+    if (err != CL_SUCCESS) throw InputError(what + " failed: " + cl_error_name(err));
 }
 
 ClProgram::~ClProgram() {

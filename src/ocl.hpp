@@ -41,6 +41,8 @@ class ClContext {
     const DeviceInfo& device() const { return info_; }
     cl_context context() const { return ctx_; }
     cl_command_queue queue() const { return queue_; }
+    // Waits for all queued work; throws naming `what` if it failed.
+    void finish(const std::string& what) const;
 
     // Builds a program from embedded kernel files (names as "cl/rng.cl"),
     // joined in order, each preceded by a #line directive naming it, after
@@ -88,8 +90,11 @@ class ClKernel {
         cl_uint i = 0;
         (set_one(i++, args), ...);
     }
-    // Runs over `items` work-items (rounded up to whole work-groups).
+    // Runs over `items` work-items (rounded up to whole work-groups) and
+    // waits for it to finish.
     void run(const ClContext& cl, std::size_t items) const;
+    // Queues a run without waiting; errors surface at the next run or finish.
+    void enqueue(const ClContext& cl, std::size_t items) const;
     cl_kernel get() const { return k_; }
     const std::string& name() const { return name_; }
 
