@@ -45,6 +45,38 @@ inline void pss_store(__global uint* state, uint chain, uint stride, LayoutSlot 
                    (uint)(u * (float)(1u << at.bits)));
 }
 
+/* Sequential writer of a chain's numbers in bit-stream order, one store per
+ * word. A commit writes the live numbers from the start; what follows them
+ * belongs to dead numbers that are never read, so the last word is written
+ * whole. A number's old value may still be read after earlier numbers have
+ * been put: a word is stored only once every number overlapping it is. */
+typedef struct {
+    ulong bits;  /* pending bits, lowest first */
+    uint count;  /* number of pending bits */
+    uint word;   /* index of the next word to store */
+} PssWriter;
+
+inline PssWriter pss_writer(void) {
+    PssWriter w = {0ul, 0u, 0u};
+    return w;
+}
+
+inline void pss_put(PssWriter* w, __global uint* state, uint chain, uint stride, LayoutSlot at,
+                    float u) {
+    w->bits |= (ulong)(uint)(u * (float)(1u << at.bits)) << w->count;
+    w->count += at.bits;
+    if (w->count >= 32u) {
+        state[w->word * stride + chain] = (uint)w->bits;
+        w->bits >>= 32;
+        w->count -= 32u;
+        ++w->word;
+    }
+}
+
+inline void pss_finish(PssWriter* w, __global uint* state, uint chain, uint stride) {
+    if (w->count > 0u) state[w->word * stride + chain] = (uint)w->bits;
+}
+
 #else
 
 inline float pss_load(const __global uint* state, uint chain, uint stride, LayoutSlot at) {
@@ -54,5 +86,21 @@ inline float pss_load(const __global uint* state, uint chain, uint stride, Layou
 inline void pss_store(__global uint* state, uint chain, uint stride, LayoutSlot at, float u) {
     state[at.dim * stride + chain] = as_uint(u);
 }
+
+typedef struct {
+    uint unused;
+} PssWriter;
+
+inline PssWriter pss_writer(void) {
+    PssWriter w = {0u};
+    return w;
+}
+
+inline void pss_put(PssWriter* w, __global uint* state, uint chain, uint stride, LayoutSlot at,
+                    float u) {
+    pss_store(state, chain, stride, at, u);
+}
+
+inline void pss_finish(PssWriter* w, __global uint* state, uint chain, uint stride) {}
 
 #endif
