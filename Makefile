@@ -73,6 +73,7 @@ test: deps
 bench: deps
 	$(MAKE) $(BIN)
 	sh bench/throughput.sh $(BIN)
+	sh bench/mlt_vs_pt.sh $(BIN) 5
 
 format:
 	clang-format -i src/*.cpp src/*.hpp test/*.cpp test/*.hpp cl/*.cl cl/*.h
