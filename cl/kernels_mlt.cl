@@ -45,15 +45,17 @@ __kernel void mlt_luminance(__global const Triangle* tris, __global const BvhNod
     lum[i] = path_luminance(s.f);
 }
 
-/* Starts chain c at the OMC path of key rng_key(seed, c, 0). */
+/* Starts chain c at the OMC path of sample picks[c]: the path of key
+ * rng_key(seed, picks[c], 0), as mlt_luminance drew it. */
 __kernel void mlt_init(__global const Triangle* tris, __global const BvhNode* nodes,
                        __global const Material* mats, __global const LightEntry* lights,
                        const Frame frame, __global uint* state, __global ChainValue* values,
-                       const uint num_chains, const ulong seed, __global ulong* stats) {
+                       const uint num_chains, const ulong seed, __global const uint* picks,
+                       __global ulong* stats) {
     uint c = get_global_id(0);
     if (c >= num_chains) return;
     SceneView sc = path_scene(tris, nodes, mats, lights, &frame);
-    SampleSource src = smp_chain(state, c, num_chains, rng_key(seed, c, 0u), SMP_LARGE, 0u);
+    SampleSource src = smp_chain(state, c, num_chains, rng_key(seed, picks[c], 0u), SMP_LARGE, 0u);
     MltSample s = mlt_checked(mlt_evaluate(&sc, &frame, &src), stats);
     mlt_commit(&src, s.bounces);
     ChainValue v = {{s.f.x, s.f.y, s.f.z}, s.bounces};

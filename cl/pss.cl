@@ -51,9 +51,9 @@ inline void pss_store(__global uint* state, uint chain, uint stride, LayoutSlot 
  * whole. A number's old value may still be read after earlier numbers have
  * been put: a word is stored only once every number overlapping it is. */
 typedef struct {
-    ulong bits;  /* pending bits, lowest first */
-    uint count;  /* number of pending bits */
-    uint word;   /* index of the next word to store */
+    ulong bits; /* pending bits, lowest first */
+    uint count; /* number of pending bits */
+    uint word;  /* index of the next word to store */
 } PssWriter;
 
 inline PssWriter pss_writer(void) {

@@ -19,8 +19,8 @@ Usage:
   smallmlt --help | --version
 
 Render options:
-  --method pt|mlt    path tracing (default) or Metropolis light transport in
-                     primary sample space (Kelemen), one chain per thread
+  --method mlt|pt    Metropolis light transport in primary sample space (Kelemen;
+                     default), one chain per thread, or path tracing
   --spp N            samples per pixel (default 16); for mlt, mutations per pixel
                      on average
   --time SECONDS     render for this long instead of a sample count
@@ -34,8 +34,13 @@ Render options:
   --quiet            no progress bar and no summary line
 
 MLT options:
-  --large-step P     probability that a mutation draws a whole new path (default 0.5)
   --threads N        number of chains (default 65536)
+  --burn-in omc|none start chains at OMC samples picked in proportion to their
+                     luminance (default), or at fresh OMC samples
+  --burn-in-iters T  OMC rounds of one sample per chain (default 8); all of them
+                     estimate the normalization b
+  --large-step P     probability that a mutation draws a whole new path
+                     (default 0.1 with burn-in, 0.5 without)
 
 Exit status: 0 success, 1 bad input or device error, 2 bad command line.
 The scene format is described in doc/scene-format.md.
@@ -119,6 +124,16 @@ RenderOptions parse_render(ArgReader& r) {
                 throw UsageError("--method: '" + m + "' is not a method (pt or mlt)");
         } else if (flag == "--large-step") {
             o.large_step = float(to_unit_interval(flag, r.value(flag, arg)));
+        } else if (flag == "--burn-in") {
+            std::string b = r.value(flag, arg);
+            if (b == "omc")
+                o.burn_in = true;
+            else if (b == "none")
+                o.burn_in = false;
+            else
+                throw UsageError("--burn-in: '" + b + "' is not a burn-in (omc or none)");
+        } else if (flag == "--burn-in-iters") {
+            o.burn_in_iters = std::uint32_t(to_int(flag, r.value(flag, arg), 1, 1 << 16));
         } else if (flag == "--threads") {
             o.threads = std::uint32_t(to_int(flag, r.value(flag, arg), 1, 1 << 26));
         } else if (flag == "--spp") {
@@ -153,6 +168,8 @@ RenderOptions parse_render(ArgReader& r) {
     if (o.spp && o.time_s) throw UsageError("--spp and --time: give one of them, not both");
     if (!o.spp && !o.time_s) o.spp = kDefaultSpp;
     if (o.outs.empty()) o.outs.push_back(default_out(o.scene));
+    if (!o.large_step)
+        o.large_step = o.burn_in ? kDefaultLargeStepBurnIn : kDefaultLargeStepNoBurnIn;
     return o;
 }
 

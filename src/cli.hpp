@@ -7,13 +7,20 @@
 
 namespace smallmlt {
 
+constexpr std::uint32_t kDefaultSpp = 16;
+constexpr std::uint32_t kDefaultBurnInIters = 8;
+constexpr float kDefaultLargeStepBurnIn = 0.1f;   // with OMC burn-in (doc/RESULTS.md)
+constexpr float kDefaultLargeStepNoBurnIn = 0.5f; // the paper's baseline without
+
 enum class Method { Pt, Mlt };
 
 struct RenderOptions {
     std::string scene;
-    Method method = Method::Pt;
-    float large_step = 0.5f;
+    Method method = Method::Mlt;
+    std::optional<float> large_step; // default depends on burn-in
     std::uint32_t threads = 1u << 16;
+    bool burn_in = true;
+    std::uint32_t burn_in_iters = kDefaultBurnInIters;
     std::optional<std::uint32_t> spp;
     std::optional<double> time_s;
     std::uint64_t seed = 1;
@@ -29,8 +36,6 @@ struct Command {
     CommandKind kind = CommandKind::Help;
     RenderOptions render;
 };
-
-constexpr std::uint32_t kDefaultSpp = 16;
 
 Command parse_command_line(int argc, const char* const* argv);
 

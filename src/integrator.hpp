@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <string>
+#include <vector>
 
 namespace smallmlt {
 
@@ -22,6 +23,10 @@ class Integrator {
     virtual Image image() const = 0;
     // Throughput and method-specific figures for the summary line.
     virtual std::string summary(double seconds) const = 0;
+    // True when more units cannot change the image (MLT with b = 0).
+    virtual bool finished() const { return false; }
+    // Remarks for the user after the summary.
+    virtual std::vector<std::string> notes() const { return {}; }
 };
 
 } // namespace smallmlt

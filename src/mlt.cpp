@@ -2,6 +2,7 @@
 
 #include "error.hpp"
 #include "rng.hpp"
+#include "scan.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -13,14 +14,14 @@ namespace smallmlt {
 namespace {
 
 // Seeds of the three kinds of streams of a render.
-constexpr std::uint64_t kPurposeB = 1, kPurposeInit = 2, kPurposeStep = 3;
+constexpr std::uint64_t kPurposeOmc = 1, kPurposePick = 2, kPurposeStep = 3;
 
 double seconds_since(std::chrono::steady_clock::time_point t0) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
-std::string program_defines(const DeviceScene& ds, const MltOptions& opt) {
-    std::string d = ds.layout.defines();
+std::string program_defines(const ClContext& cl, const DeviceScene& ds, const MltOptions& opt) {
+    std::string d = ds.layout.defines() + scan_defines(cl.device());
     if (opt.float32_states) d += "#define PSS_FLOAT32 1\n";
     return d;
 }
@@ -37,9 +38,9 @@ const DeviceScene& require_atomics(const ClContext& cl, const DeviceScene& ds) {
 
 std::vector<std::string> mlt_program_files(const MltOptions& opt) {
     std::vector<std::string> files = {
-        "cl/shared_types.h", "cl/rng.cl",   "cl/layout.cl",     "cl/pss.cl",   "cl/sample_mlt.cl",
-        "cl/geometry.cl",    "cl/bvh.cl",   "cl/bsdf.cl",       "cl/light.cl", "cl/path.cl",
-        "cl/camera.cl",      opt.evaluator, "cl/kernels_mlt.cl"};
+        "cl/shared_types.h", "cl/rng.cl",   "cl/layout.cl",      "cl/pss.cl",   "cl/sample_mlt.cl",
+        "cl/geometry.cl",    "cl/bvh.cl",   "cl/bsdf.cl",        "cl/light.cl", "cl/path.cl",
+        "cl/camera.cl",      opt.evaluator, "cl/kernels_mlt.cl", "cl/scan.cl",  "cl/burnin.cl"};
     files.insert(files.end(), opt.extra_files.begin(), opt.extra_files.end());
     return files;
 }
@@ -51,38 +52,59 @@ std::uint32_t mlt_words_per_chain(const SampleLayout& layout, bool float32_state
 
 MltRenderer::MltRenderer(const ClContext& cl, const DeviceScene& ds, const MltOptions& opt)
     : cl_(cl), ds_(require_atomics(cl, ds)), opt_(opt),
-      program_(cl.build(mlt_program_files(opt), program_defines(ds, opt))),
+      program_(cl.build(mlt_program_files(opt), program_defines(cl, ds, opt))),
       k_lum_(program_.p, "mlt_luminance"), k_init_(program_.p, "mlt_init"),
-      k_step_(program_.p, "mlt_step"), scene_(cl, ds),
+      k_step_(program_.p, "mlt_step"), k_pick_(program_.p, "burnin_pick"), scene_(cl, ds),
       state_(cl, CL_MEM_READ_WRITE,
              std::size_t(mlt_words_per_chain(ds.layout, opt.float32_states)) * opt.chains *
                  sizeof(cl_uint)),
       values_(cl, CL_MEM_READ_WRITE, std::size_t(opt.chains) * sizeof(ChainValue)),
       splat_(cl, CL_MEM_READ_WRITE, pixels() * 3 * sizeof(cl_ulong)),
-      stats_(cl, CL_MEM_READ_WRITE, MLT_STAT_COUNT * sizeof(cl_ulong)) {
+      stats_(cl, CL_MEM_READ_WRITE, MLT_STAT_COUNT * sizeof(cl_ulong)),
+      picks_(cl, CL_MEM_READ_WRITE, std::size_t(opt.chains) * sizeof(cl_uint)) {
     state_.fill_zero(cl);
     splat_.fill_zero(cl);
     stats_.fill_zero(cl);
+    picks_.fill_zero(cl);
 }
 
-void MltRenderer::estimate_b() {
-    std::uint32_t batch = opt_.chains;
-    ClBuffer lum(cl_, CL_MEM_WRITE_ONLY, std::size_t(batch) * sizeof(float));
-    std::vector<float> host(batch);
+void MltRenderer::sample_starts() {
+    const std::uint32_t m = opt_.chains, iters = std::max(1u, opt_.burn_in_iters);
+    ClBuffer lum(cl_, CL_MEM_READ_WRITE, std::size_t(m) * sizeof(float));
+    ClBuffer scan(cl_, CL_MEM_READ_WRITE, std::size_t(m) * sizeof(float));
+    DeviceScan scanner(cl_, program_.p, m, sizeof(float));
+    std::vector<float> host(m);
     double sum = 0, sum2 = 0;
-    cl_ulong seed = derive_seed(opt_.seed, kPurposeB);
-    for (std::uint32_t first = 0; first < opt_.b_samples; first += batch) {
-        cl_uint count = std::min(batch, opt_.b_samples - first);
+    cl_ulong omc_seed = derive_seed(opt_.seed, kPurposeOmc);
+    cl_ulong pick_seed = derive_seed(opt_.seed, kPurposePick);
+    std::uint32_t picked = 0;
+    for (std::uint32_t it = 0; it < iters; ++it) {
+        cl_uint first = it * m;
         k_lum_.set_args(scene_.tris, scene_.nodes, scene_.mats, scene_.lights, ds_.frame, state_,
-                        seed, cl_uint(first), count, lum, stats_);
-        k_lum_.run(cl_, count);
+                        omc_seed, first, cl_uint(m), lum, stats_);
+        k_lum_.run(cl_, m);
         lum.read(cl_, host.data());
-        for (cl_uint i = 0; i < count; ++i) {
-            sum += host[i];
-            sum2 += double(host[i]) * host[i];
+        for (float y : host) {
+            sum += y;
+            sum2 += double(y) * y;
         }
+        if (!opt_.burn_in) continue;
+        // Round it keeps its share of the m starts (the first m % iters rounds one more).
+        cl_uint count = m / iters + (it < m % iters ? 1u : 0u);
+        scanner.run(lum, scan, m);
+        k_pick_.set_args(scan, cl_uint(m), pick_seed, cl_uint(it), first, cl_uint(picked), count,
+                         picks_);
+        k_pick_.run(cl_, count);
+        picked += count;
     }
-    double n = opt_.b_samples;
+    if (!opt_.burn_in) {
+        // Fresh samples, numbered after those that estimated b.
+        std::vector<cl_uint> fresh(m);
+        for (std::uint32_t c = 0; c < m; ++c)
+            fresh[c] = iters * m + c;
+        picks_.write(cl_, fresh.data());
+    }
+    double n = double(m) * iters;
     b_ = sum / n;
     double var = n > 1 ? (sum2 / n - b_ * b_) * n / (n - 1) : 0;
     b_rel_error_ = b_ > 0 ? std::sqrt(std::max(var, 0.0) / n) / b_ : 0;
@@ -90,15 +112,16 @@ void MltRenderer::estimate_b() {
 
 void MltRenderer::prepare() {
     auto t0 = std::chrono::steady_clock::now();
-    estimate_b();
+    sample_starts();
     init_chains();
+    prepared_ = true;
     prepare_seconds_ += seconds_since(t0);
 }
 
 void MltRenderer::init_chains() {
-    cl_ulong seed = derive_seed(opt_.seed, kPurposeInit);
+    cl_ulong seed = derive_seed(opt_.seed, kPurposeOmc);
     k_init_.set_args(scene_.tris, scene_.nodes, scene_.mats, scene_.lights, ds_.frame, state_,
-                     values_, cl_uint(opt_.chains), seed, stats_);
+                     values_, cl_uint(opt_.chains), seed, picks_, stats_);
     k_init_.run(cl_, opt_.chains);
 }
 
@@ -130,6 +153,15 @@ MltStats MltRenderer::stats() const {
     out.large = s[MLT_STAT_LARGE];
     out.nonfinite = s[MLT_STAT_NONFINITE];
     out.rays = s[MLT_STAT_RAYS];
+    return out;
+}
+
+std::vector<std::string> MltRenderer::notes() const {
+    std::vector<std::string> out;
+    if (prepared_ && b_ == 0)
+        out.push_back("no OMC sample of " +
+                      std::to_string(std::uint64_t(opt_.chains) * opt_.burn_in_iters) +
+                      " carried light (b = 0): the image is black; is the scene lit?");
     return out;
 }
 

@@ -17,8 +17,13 @@ struct MltOptions {
     std::uint32_t chains = 1u << 16;
     float large_step = 0.5f; // probability that a step is large
     std::uint64_t seed = 1;
-    std::uint32_t b_samples = 1u << 18; // OMC samples that estimate b
-    bool float32_states = false;        // unpacked float32 states (reference build)
+    // Burn-in by OMC (Frolov and Galaktionov, section 3.1): burn_in_iters
+    // rounds of one OMC sample per chain; each round keeps chains / iters of
+    // them in proportion to luminance as chain starts. All chains x iters
+    // samples estimate b. Without burn-in, chains start at fresh OMC samples.
+    bool burn_in = true;
+    std::uint32_t burn_in_iters = 8;
+    bool float32_states = false; // unpacked float32 states (reference build)
     // The file that defines mlt_evaluate: cl/eval_path.cl renders the scene;
     // the sampler tests use cl/eval_target.cl, a known 2D target.
     std::string evaluator = "cl/eval_path.cl";
@@ -48,13 +53,17 @@ class MltRenderer : public Integrator {
         return double(iterations_) * opt_.chains / double(pixels());
     }
     std::string summary(double seconds) const override;
+    // No OMC sample carried light: the image is black whatever the chains do.
+    bool finished() const override { return prepared_ && b_ == 0; }
+    std::vector<std::string> notes() const override;
 
-    // b = mean luminance of opt.b_samples OMC samples; relative standard error.
-    void estimate_b();
+    // Runs the OMC samples: b = their mean luminance (with its relative
+    // standard error), and the chains' starting samples (burn-in or fresh).
+    void sample_starts();
     double b() const { return b_; }
     double b_rel_error() const { return b_rel_error_; }
 
-    // Starts every chain at an independent OMC path (uniform in primary sample space).
+    // Starts every chain at its starting sample's path.
     void init_chains();
     // n Metropolis steps of every chain.
     void step(std::uint32_t n);
@@ -77,10 +86,11 @@ class MltRenderer : public Integrator {
     const DeviceScene& ds_;
     MltOptions opt_;
     ClProgram program_;
-    ClKernel k_lum_, k_init_, k_step_;
+    ClKernel k_lum_, k_init_, k_step_, k_pick_;
     SceneBuffers scene_;
-    ClBuffer state_, values_, splat_, stats_;
+    ClBuffer state_, values_, splat_, stats_, picks_;
     double b_ = 0, b_rel_error_ = 0;
+    bool prepared_ = false;
     std::uint32_t iterations_ = 0;
     double prepare_seconds_ = 0, step_seconds_ = 0; // wall time of b + chain start, of steps
 };

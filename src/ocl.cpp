@@ -240,7 +240,8 @@ void ClBuffer::fill_zero(const ClContext& cl) const {
 ClKernel::ClKernel(cl_program program, const char* name) : name_(name) {
     cl_int err = CL_SUCCESS;
     k_ = clCreateKernel(program, name, &err);
-    CL_CHECK(err);
+    if (err != CL_SUCCESS)
+        throw InputError(std::string("clCreateKernel(") + name + ") failed: " + cl_error_name(err));
 }
 
 ClKernel::~ClKernel() {
@@ -259,13 +260,8 @@ void ClKernel::set_raw(cl_uint i, std::size_t bytes, const void* v) {
                          ") failed: " + cl_error_name(err));
 }
 
-namespace {
-constexpr std::size_t kWorkGroup = 64;
-}
-
-void ClKernel::enqueue(const ClContext& cl, std::size_t items) const {
+void ClKernel::enqueue(const ClContext& cl, std::size_t items, std::size_t local) const {
     if (items == 0) return;
-    std::size_t local = kWorkGroup;
     std::size_t global = (items + local - 1) / local * local;
     cl_int err =
         clEnqueueNDRangeKernel(cl.queue(), k_, 1, nullptr, &global, &local, 0, nullptr, nullptr);
@@ -275,8 +271,8 @@ void ClKernel::enqueue(const ClContext& cl, std::size_t items) const {
                          ") failed: " + cl_error_name(err));
 }
 
-void ClKernel::run(const ClContext& cl, std::size_t items) const {
-    enqueue(cl, items);
+void ClKernel::run(const ClContext& cl, std::size_t items, std::size_t local) const {
+    enqueue(cl, items, local);
     cl.finish("kernel " + name_ + " over " + std::to_string(items) + " work-items");
 }
 

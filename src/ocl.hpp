@@ -78,6 +78,8 @@ class ClBuffer {
     std::size_t bytes_ = 0;
 };
 
+constexpr std::size_t kDefaultWorkGroup = 64;
+
 // A kernel released on destruction, with typed argument setting.
 class ClKernel {
   public:
@@ -90,11 +92,12 @@ class ClKernel {
         cl_uint i = 0;
         (set_one(i++, args), ...);
     }
-    // Runs over `items` work-items (rounded up to whole work-groups) and
-    // waits for it to finish.
-    void run(const ClContext& cl, std::size_t items) const;
+    // Runs over `items` work-items (rounded up to whole work-groups of
+    // `local`) and waits for it to finish.
+    void run(const ClContext& cl, std::size_t items, std::size_t local = kDefaultWorkGroup) const;
     // Queues a run without waiting; errors surface at the next run or finish.
-    void enqueue(const ClContext& cl, std::size_t items) const;
+    void enqueue(const ClContext& cl, std::size_t items,
+                 std::size_t local = kDefaultWorkGroup) const;
     cl_kernel get() const { return k_; }
     const std::string& name() const { return name_; }
 

@@ -42,8 +42,10 @@ std::unique_ptr<Integrator> make_integrator(const RenderOptions& o, const ClCont
     if (o.method == Method::Pt) return std::make_unique<PathTracer>(cl, ds, o.seed);
     MltOptions m;
     m.chains = o.threads;
-    m.large_step = o.large_step;
+    m.large_step = *o.large_step;
     m.seed = o.seed;
+    m.burn_in = o.burn_in;
+    m.burn_in_iters = o.burn_in_iters;
     return std::make_unique<MltRenderer>(cl, ds, m);
 }
 
@@ -67,6 +69,7 @@ int run_render(const RenderOptions& o) {
     for (;;) {
         double elapsed = seconds_since(t0);
         std::uint64_t n = batch;
+        if (method->finished()) break;
         if (o.spp) {
             if (done >= target) break;
             n = std::min(n, target - done);
@@ -97,6 +100,8 @@ int run_render(const RenderOptions& o) {
         std::printf("%s: %dx%d, depth %d, %s: %.2f s (+%.2f s setup), %s\n", o.scene.c_str(),
                     scene.width, scene.height, scene.depth, o.method == Method::Pt ? "pt" : "mlt",
                     render_s, setup_s, method->summary(render_s).c_str());
+        for (const std::string& note : method->notes())
+            std::printf("note: %s\n", note.c_str());
         if (scene.dropped_degenerate)
             std::printf("note: %d zero-area triangle(s) left out\n", scene.dropped_degenerate);
     }

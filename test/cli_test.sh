@@ -64,13 +64,20 @@ absent missing_scene_no_file "$DIR/missing.png"
 printf 'film 8 8\nlens 1\n' > "$DIR/bad.scene"
 check bad_scene 1 "bad.scene:2: unknown directive 'lens'" -- "$BIN" render "$DIR/bad.scene" --out "$DIR/bad.png"
 absent bad_scene_no_file "$DIR/bad.png"
-check render_ok 0 "8x8, depth 8, pt: " -- "$BIN" render scenes/cornell.scene --width 8 --height 8 --spp 2 --out "$DIR/ok.png" --out "$DIR/ok.pfm"
+check render_ok 0 "8x8, depth 8, pt: " -- "$BIN" render scenes/cornell.scene --method pt --width 8 --height 8 --spp 2 --out "$DIR/ok.png" --out "$DIR/ok.pfm"
 check render_mlt 0 "mlt: " -- "$BIN" render scenes/cornell.scene --width 8 --height 8 --spp 2 --method mlt --threads 64 --out "$DIR/mlt.pfm"
+check mlt_default 0 "mlt: " -- "$BIN" render scenes/cornell.scene --width 8 --height 8 --spp 1 --threads 64 --out "$DIR/default.png"
+check burn_in_bad 2 "--burn-in: 'mcmc' is not a burn-in" -- "$BIN" render scenes/cornell.scene --burn-in mcmc
+check burn_in_iters_zero 2 "--burn-in-iters: 0 is out of range" -- "$BIN" render scenes/cornell.scene --burn-in-iters 0
+printf 'newmtl grey\nKd 0.5 0.5 0.5\n' > "$DIR/dark.mtl"
+printf 'mtllib dark.mtl\nv -1 0 -1\nv 1 0 -1\nv 0 2 -1\nusemtl grey\nf 1 2 3\n' > "$DIR/dark.obj"
+printf 'camera 0 1 3  0 1 0  0 1 0  40\nmesh dark.obj\n' > "$DIR/dark.scene"
+check black_scene 0 "carried light (b = 0): the image is black" -- "$BIN" render "$DIR/dark.scene" --width 8 --height 8 --threads 64 --out "$DIR/dark.pfm"
 check method_bad 2 "--method: 'bdpt' is not a method" -- "$BIN" render scenes/cornell.scene --method bdpt
 check large_step_range 2 "--large-step: '1.5' is not a probability" -- "$BIN" render scenes/cornell.scene --large-step 1.5
 check threads_zero 2 "--threads: 0 is out of range" -- "$BIN" render scenes/cornell.scene --threads 0
 check render_quiet 0 "" -- "$BIN" render scenes/cornell.scene --width 8 --height 8 --spp 1 --quiet --out "$DIR/q.exr"
-for f in ok.png ok.pfm q.exr mlt.pfm; do
+for f in ok.png ok.pfm q.exr mlt.pfm default.png dark.pfm; do
     if [ -s "$DIR/$f" ]; then pass=$((pass + 1)); echo "ok   wrote $f"; else fail=$((fail + 1)); echo "FAIL $f missing"; fi
 done
 leftover=$(ls -A "$DIR" | grep '^\.tmp-' || true)

@@ -99,7 +99,7 @@ TEST(MltLazy, LazyProposalEqualsEagerAndCommitStoresIt) {
     opt.chains = 1024;
     opt.extra_files = {kProbeFile};
     MltRenderer mlt(test::cl(), ds, opt);
-    mlt.init_chains();
+    mlt.prepare();
     ClBuffer eager(test::cl(), CL_MEM_READ_WRITE, mlt.state().bytes());
     ClBuffer out(test::cl(), CL_MEM_WRITE_ONLY, std::size_t(opt.chains) * 3 * sizeof(cl_float4));
     SceneBuffers sb(test::cl(), ds);
@@ -150,8 +150,9 @@ TEST(MltSampler, ChainStatesFollowAKnownTarget) {
     opt.seed = 5;
     opt.evaluator = "cl/eval_target.cl";
     opt.extra_files = {kProbeFile};
+    opt.burn_in = false; // chains start uniform: the steps alone must reach the target
     MltRenderer mlt(test::cl(), ds, opt);
-    mlt.init_chains();
+    mlt.prepare();
     mlt.step(300);
     ClBuffer out(test::cl(), CL_MEM_WRITE_ONLY, opt.chains * sizeof(cl_uint));
     ClKernel k(mlt.program(), "probe_chain_pixel");
@@ -196,7 +197,7 @@ TEST(MltSampler, SplatImageMatchesTheTarget) {
         opt.chains = 1024;
         opt.large_step = 0.3f;
         opt.seed = 100 + r;
-        opt.b_samples = 1u << 16;
+        opt.burn_in_iters = 64; // b from 2^16 samples
         opt.evaluator = "cl/eval_target.cl";
         MltRenderer mlt(test::cl(), ds, opt);
         mlt.prepare();
@@ -264,7 +265,7 @@ TEST_P(MltRender, MeanMatchesPathTracingAndErrorFalls) {
     MltOptions opt;
     opt.chains = 4096;
     opt.seed = 7;
-    opt.b_samples = 1u << 21;
+    opt.burn_in_iters = 512; // b from 2^21 samples
     MltRenderer mlt(test::cl(), ds, opt);
     mlt.prepare();
     std::vector<double> errors;
@@ -300,7 +301,7 @@ TEST(MltPrecision, PackedAndFloat32StatesAgreeWithinNoise) {
             MltOptions opt;
             opt.chains = 2048;
             opt.seed = 300 + r + 50 * build;
-            opt.b_samples = 1u << 14;
+            opt.burn_in_iters = 8;
             opt.float32_states = build == 1;
             MltRenderer mlt(test::cl(), ds, opt);
             mlt.prepare();
@@ -341,7 +342,7 @@ TEST(MltDeterminism, SameSeedSameImage) {
         MltOptions opt;
         opt.chains = 2048;
         opt.seed = 77;
-        opt.b_samples = 1u << 14;
+        opt.burn_in_iters = 8;
         MltRenderer mlt(test::cl(), ds, opt);
         mlt.prepare();
         mlt.step(16);

@@ -1,0 +1,189 @@
+// Burn-in by OMC: the device scan is a prefix sum, picks are proportional to
+// luminance, and chains that start where the light is remove most of the
+// startup bias.
+#include "mlt.hpp"
+#include "scan.hpp"
+#include "test_support.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+using namespace smallmlt;
+
+namespace {
+
+// Upper critical value of chi-square at significance 0.001: exact for 1 and
+// 2 degrees of freedom, Wilson-Hilferty above (within a fraction of a percent).
+double chi2_critical_001(int df) {
+    if (df == 1) return 10.828;
+    if (df == 2) return 13.816;
+    const double z = 3.0902, a = 2.0 / (9.0 * df);
+    return df * std::pow(1.0 - a + z * std::sqrt(a), 3.0);
+}
+
+template <typename T> std::vector<T> device_scan(const std::vector<T>& in, const char* type) {
+    const ClContext& cl = test::cl();
+    ClProgram prog(
+        cl.build({"cl/scan.cl"}, scan_defines(cl.device()) + "#define SCAN_T " + type + "\n"));
+    DeviceScan scan(cl, prog.p, in.size(), sizeof(T));
+    ClBuffer a(cl, CL_MEM_READ_ONLY, in.size() * sizeof(T), in.data());
+    ClBuffer b(cl, CL_MEM_READ_WRITE, in.size() * sizeof(T));
+    scan.run(a, b, in.size());
+    std::vector<T> out(in.size());
+    b.read(cl, out.data());
+    return out;
+}
+
+const std::size_t kSizes[] = {1, 7, 511, 512, 513, 1000, 4097, 100003};
+
+} // namespace
+
+TEST(Scan, IntegerInputMatchesHostExactly) {
+    std::mt19937 rng(1);
+    for (std::size_t n : kSizes) {
+        std::vector<cl_uint> in(n);
+        for (cl_uint& x : in)
+            x = rng() % 1000;
+        std::vector<cl_uint> out = device_scan(in, "uint");
+        cl_uint sum = 0;
+        for (std::size_t i = 0; i < n; ++i) {
+            sum += in[i];
+            ASSERT_EQ(out[i], sum) << "n " << n << " i " << i;
+        }
+    }
+}
+
+// A float scan adds in a different order than a sequential sum; for
+// non-negative inputs each prefix is within log2(n) + 2 roundings of the
+// exact (double) prefix.
+TEST(Scan, FloatInputMatchesHostWithinRounding) {
+    std::mt19937 rng(2);
+    std::uniform_real_distribution<float> u(0.0f, 1.0f);
+    for (std::size_t n : kSizes) {
+        std::vector<float> in(n);
+        for (float& x : in)
+            x = u(rng);
+        std::vector<float> out = device_scan(in, "float");
+        double sum = 0, tol = (std::log2(double(n)) + 2) * std::ldexp(1.0, -24);
+        for (std::size_t i = 0; i < n; ++i) {
+            sum += in[i];
+            ASSERT_NEAR(out[i], sum, tol * sum + 1e-30) << "n " << n << " i " << i;
+        }
+    }
+}
+
+namespace {
+
+// Picks `count` indices from weights w with the burnin_pick kernel.
+std::vector<cl_uint> pick(const std::vector<float>& w, std::uint32_t count) {
+    const ClContext& cl = test::cl();
+    ClProgram prog(
+        cl.build({"cl/rng.cl", "cl/scan.cl", "cl/burnin.cl"}, scan_defines(cl.device())));
+    DeviceScan scan(cl, prog.p, w.size(), sizeof(float));
+    ClBuffer in(cl, CL_MEM_READ_ONLY, w.size() * sizeof(float), w.data());
+    ClBuffer cdf(cl, CL_MEM_READ_WRITE, w.size() * sizeof(float));
+    ClBuffer picks(cl, CL_MEM_WRITE_ONLY, count * sizeof(cl_uint));
+    scan.run(in, cdf, w.size());
+    ClKernel k(prog.p, "burnin_pick");
+    k.set_args(cdf, cl_uint(w.size()), cl_ulong(12345), cl_uint(0), cl_uint(0), cl_uint(0),
+               cl_uint(count), picks);
+    k.run(cl, count);
+    std::vector<cl_uint> out(count);
+    picks.read(cl, out.data());
+    return out;
+}
+
+// Chi-square of pick counts against weights, over consecutive indices pooled
+// until each pool expects at least 5 picks; zero weights must get nothing.
+void check_proportional(const std::vector<float>& w, std::uint32_t count) {
+    std::vector<cl_uint> picks = pick(w, count);
+    std::vector<double> n(w.size(), 0.0);
+    for (cl_uint i : picks) {
+        ASSERT_LT(i, w.size());
+        n[i] += 1;
+    }
+    double total = 0;
+    for (float x : w)
+        total += x;
+    double chi2 = 0, pool_e = 0, pool_n = 0;
+    int pools = 0;
+    for (std::size_t i = 0; i < w.size(); ++i) {
+        if (w[i] == 0) {
+            EXPECT_EQ(n[i], 0) << "zero-weight sample " << i << " picked";
+            continue;
+        }
+        pool_e += count * w[i] / total;
+        pool_n += n[i];
+        if (pool_e >= 5 || i + 1 == w.size()) {
+            chi2 += (pool_n - pool_e) * (pool_n - pool_e) / pool_e;
+            ++pools;
+            pool_e = pool_n = 0;
+        }
+    }
+    ASSERT_GE(pools, 2);
+    EXPECT_LT(chi2, chi2_critical_001(pools - 1)) << pools << " pools";
+}
+
+} // namespace
+
+TEST(BurnInPick, ProportionalToLuminance) {
+    std::mt19937 rng(9);
+    std::uniform_real_distribution<float> u(0.0f, 1.0f);
+    std::vector<float> mixed(1000);
+    for (float& x : mixed)
+        x = u(rng) < 0.3f ? 0.0f : u(rng) * u(rng) * 10;
+    check_proportional(mixed, 200000);
+}
+
+TEST(BurnInPick, AllEqual) {
+    check_proportional(std::vector<float>(777, 0.25f), 100000);
+}
+
+TEST(BurnInPick, OneHugeValue) {
+    std::vector<float> w(1000, 1.0f);
+    for (std::size_t i = 0; i < w.size(); i += 7)
+        w[i] = 0.0f;
+    w[500] = 1e5f;
+    check_proportional(w, 100000);
+}
+
+TEST(BurnInPick, OnlyZerosPicksUniformly) {
+    std::vector<cl_uint> picks = pick(std::vector<float>(100, 0.0f), 20000);
+    std::vector<int> n(100, 0);
+    for (cl_uint i : picks)
+        ++n[i];
+    double chi2 = 0;
+    for (int c : n)
+        chi2 += (c - 200.0) * (c - 200.0) / 200.0;
+    EXPECT_LT(chi2, chi2_critical_001(99));
+}
+
+// The paper's Figure 1 in a test: early in a render (2 of a normal render's
+// 64 steps), the error against a path-traced reference with OMC burn-in (at
+// the default large-step probability) is at least 3 times lower than without
+// burn-in at large-step 0.5, same seed and chains.
+TEST(BurnIn, RemovesMostOfTheStartupBias) {
+    DeviceScene ds = prepare_scene(test::scene("cornell-water", 32, 32));
+    Image ref = test::render_pt(ds, 31, 2048);
+    double err[2];
+    for (int burn = 0; burn < 2; ++burn) {
+        MltOptions opt;
+        opt.chains = 4096;
+        opt.seed = 3;
+        opt.burn_in = burn == 1;
+        opt.large_step = burn ? 0.1f : 0.5f;
+        MltRenderer mlt(test::cl(), ds, opt);
+        mlt.prepare();
+        mlt.step(2);
+        Image img = mlt.image();
+        double s = 0;
+        for (std::size_t i = 0; i < img.rgb.size(); ++i)
+            s += double(img.rgb[i] - ref.rgb[i]) * (img.rgb[i] - ref.rgb[i]);
+        err[burn] = s / double(img.rgb.size());
+    }
+    std::printf("MSE after 2 steps: without burn-in %.4g, with %.4g (ratio %.1f)\n", err[0], err[1],
+                err[0] / err[1]);
+    EXPECT_GT(err[0], 3 * err[1]);
+}
