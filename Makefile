@@ -12,7 +12,7 @@ CXXFLAGS += -O1 -fsanitize=address,undefined -fno-omit-frame-pointer -fno-saniti
 LDFLAGS  += -fsanitize=address,undefined
 endif
 
-DEB_PACKAGES := g++ make pocl-opencl-icd ocl-icd-opencl-dev opencl-headers libstb-dev \
+DEB_PACKAGES := g++ make pocl-opencl-icd ocl-icd-opencl-dev opencl-headers libstb-dev gnuplot-nox \
                 libtinyobjloader-dev libtinyexr-dev libgtest-dev
 
 CL_FILES   := $(sort $(wildcard cl/*.h cl/*.cl))

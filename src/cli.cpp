@@ -15,6 +15,8 @@ const char* usage_text() {
 
 Usage:
   smallmlt render SCENE [options]   render a .scene file
+  smallmlt compare IMAGE REFERENCE  error of IMAGE against REFERENCE (.pfm or .exr):
+                                    MSE and relative MSE on linear values
   smallmlt devices                  list OpenCL devices and their memory
   smallmlt --help | --version
 
@@ -37,7 +39,7 @@ MLT options:
   --threads N        number of chains (default 65536)
   --burn-in omc|none start chains at OMC samples picked in proportion to their
                      luminance (default), or at fresh OMC samples
-  --burn-in-iters T  OMC rounds of one sample per chain (default 8); all of them
+  --burn-in-iters T  OMC rounds of one sample per chain (default 32); all of them
                      estimate the normalization b
   --large-step P     probability that a mutation draws a whole new path
                      (default 0.1 with burn-in, 0.5 without)
@@ -187,6 +189,13 @@ Command parse_command_line(int argc, const char* const* argv) {
     } else if (cmd == "devices") {
         c.kind = CommandKind::Devices;
         if (!r.done()) throw UsageError("devices: unexpected argument '" + r.next() + "'");
+    } else if (cmd == "compare") {
+        c.kind = CommandKind::Compare;
+        if (r.done()) throw UsageError("compare: give IMAGE and REFERENCE");
+        c.image = r.next();
+        if (r.done()) throw UsageError("compare: give IMAGE and REFERENCE");
+        c.reference = r.next();
+        if (!r.done()) throw UsageError("compare: unexpected argument '" + r.next() + "'");
     } else if (cmd == "render") {
         for (int i = r.i; i < argc; ++i)
             if (std::string(argv[i]) == "--help" || std::string(argv[i]) == "-h") {
@@ -196,7 +205,8 @@ Command parse_command_line(int argc, const char* const* argv) {
         c.kind = CommandKind::Render;
         c.render = parse_render(r);
     } else {
-        throw UsageError("unknown command '" + cmd + "' (expected render or devices; see --help)");
+        throw UsageError("unknown command '" + cmd +
+                         "' (expected render, compare or devices; see --help)");
     }
     return c;
 }

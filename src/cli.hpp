@@ -1,5 +1,7 @@
 // Command-line parsing. Bad flags and values throw UsageError naming the flag.
 #pragma once
+#include "mlt.hpp"
+
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -18,9 +20,9 @@ struct RenderOptions {
     std::string scene;
     Method method = Method::Mlt;
     std::optional<float> large_step; // default depends on burn-in
-    std::uint32_t threads = 1u << 16;
+    std::uint32_t threads = MltOptions().chains;
     bool burn_in = true;
-    std::uint32_t burn_in_iters = kDefaultBurnInIters;
+    std::uint32_t burn_in_iters = MltOptions().burn_in_iters;
     std::optional<std::uint32_t> spp;
     std::optional<double> time_s;
     std::uint64_t seed = 1;
@@ -30,11 +32,12 @@ struct RenderOptions {
     bool quiet = false;
 };
 
-enum class CommandKind { Render, Devices, Help, Version };
+enum class CommandKind { Render, Compare, Devices, Help, Version };
 
 struct Command {
     CommandKind kind = CommandKind::Help;
     RenderOptions render;
+    std::string image, reference; // compare
 };
 
 Command parse_command_line(int argc, const char* const* argv);

@@ -29,4 +29,7 @@ Image read_pfm(const std::string& path);
 // Reads an RGB EXR file.
 Image read_exr(const std::string& path);
 
+// Reads a PFM or EXR file, by extension.
+Image read_image(const std::string& path);
+
 } // namespace smallmlt

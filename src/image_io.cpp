@@ -92,6 +92,7 @@ void write_image(const Image& img, const std::string& path) {
 
 Image read_pfm(const std::string& path) {
     std::ifstream in(path, std::ios::binary);
+    if (!in) throw InputError(path + ": cannot open image");
     std::string magic;
     int w = 0, h = 0;
     float scale = 0;
@@ -121,6 +122,21 @@ Image read_exr(const std::string& path) {
             img.rgb[3 * i + c] = data[4 * i + c];
     std::free(data);
     return img;
+}
+
+} // namespace smallmlt
+
+namespace smallmlt {
+
+Image read_image(const std::string& path) {
+    switch (image_format_of(path)) {
+    case ImageFormat::Pfm:
+        return read_pfm(path);
+    case ImageFormat::Exr:
+        return read_exr(path);
+    default:
+        throw UsageError(path + ": only .pfm and .exr images hold linear radiance to compare");
+    }
 }
 
 } // namespace smallmlt

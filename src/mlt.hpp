@@ -22,8 +22,8 @@ struct MltOptions {
     // them in proportion to luminance as chain starts. All chains x iters
     // samples estimate b. Without burn-in, chains start at fresh OMC samples.
     bool burn_in = true;
-    std::uint32_t burn_in_iters = 8;
-    bool float32_states = false; // unpacked float32 states (reference build)
+    std::uint32_t burn_in_iters = 32; // chosen by measurement (doc/RESULTS.md)
+    bool float32_states = false;      // unpacked float32 states (reference build)
     // The file that defines mlt_evaluate: cl/eval_path.cl renders the scene;
     // the sampler tests use cl/eval_target.cl, a known 2D target.
     std::string evaluator = "cl/eval_path.cl";

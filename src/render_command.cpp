@@ -1,6 +1,7 @@
 #include "render_command.hpp"
 
 #include "error.hpp"
+#include "image_metrics.hpp"
 #include "mlt.hpp"
 #include "path_tracer.hpp"
 #include "progress.hpp"
@@ -105,6 +106,14 @@ int run_render(const RenderOptions& o) {
         if (scene.dropped_degenerate)
             std::printf("note: %d zero-area triangle(s) left out\n", scene.dropped_degenerate);
     }
+    return 0;
+}
+
+int run_compare(const std::string& image, const std::string& reference) {
+    Image img = read_image(image), ref = read_image(reference);
+    require_same_size(img, ref, image);
+    std::printf("mse %.6g rel_mse %.6g mean %.6g reference_mean %.6g\n", image_mse(img, ref),
+                image_rel_mse(img, ref), img.mean_luminance(), ref.mean_luminance());
     return 0;
 }
 

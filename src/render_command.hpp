@@ -6,5 +6,6 @@ namespace smallmlt {
 
 int run_render(const RenderOptions& o);
 int run_devices();
+int run_compare(const std::string& image, const std::string& reference);
 
 } // namespace smallmlt

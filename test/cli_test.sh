@@ -80,6 +80,12 @@ check render_quiet 0 "" -- "$BIN" render scenes/cornell.scene --width 8 --height
 for f in ok.png ok.pfm q.exr mlt.pfm default.png dark.pfm; do
     if [ -s "$DIR/$f" ]; then pass=$((pass + 1)); echo "ok   wrote $f"; else fail=$((fail + 1)); echo "FAIL $f missing"; fi
 done
+"$BIN" render scenes/cornell.scene --method pt --width 4 --height 4 --spp 1 --quiet --out "$DIR/small.pfm"
+check compare_ok 0 "mse 0 rel_mse 0" -- "$BIN" compare "$DIR/ok.pfm" "$DIR/ok.pfm"
+check compare_size 1 "image is 8x8, reference 4x4" -- "$BIN" compare "$DIR/ok.pfm" "$DIR/small.pfm"
+check compare_missing 1 "nope.pfm: cannot open image" -- "$BIN" compare "$DIR/ok.pfm" "$DIR/nope.pfm"
+check compare_args 2 "compare: give IMAGE and REFERENCE" -- "$BIN" compare "$DIR/ok.pfm"
+check compare_png 2 "only .pfm and .exr" -- "$BIN" compare "$DIR/ok.png" "$DIR/ok.pfm"
 leftover=$(ls -A "$DIR" | grep '^\.tmp-' || true)
 if [ -z "$leftover" ]; then pass=$((pass + 1)); echo "ok   no temporary files"; else fail=$((fail + 1)); echo "FAIL temporary files left: $leftover"; fi
 

@@ -1,6 +1,7 @@
 // Burn-in by OMC: the device scan is a prefix sum, picks are proportional to
 // luminance, and chains that start where the light is remove most of the
 // startup bias.
+#include "image_metrics.hpp"
 #include "mlt.hpp"
 #include "scan.hpp"
 #include "test_support.hpp"
@@ -177,11 +178,7 @@ TEST(BurnIn, RemovesMostOfTheStartupBias) {
         MltRenderer mlt(test::cl(), ds, opt);
         mlt.prepare();
         mlt.step(2);
-        Image img = mlt.image();
-        double s = 0;
-        for (std::size_t i = 0; i < img.rgb.size(); ++i)
-            s += double(img.rgb[i] - ref.rgb[i]) * (img.rgb[i] - ref.rgb[i]);
-        err[burn] = s / double(img.rgb.size());
+        err[burn] = image_mse(mlt.image(), ref);
     }
     std::printf("MSE after 2 steps: without burn-in %.4g, with %.4g (ratio %.1f)\n", err[0], err[1],
                 err[0] / err[1]);

@@ -1,6 +1,7 @@
 // Primary-sample-space MLT: packed storage is exact, lazy proposals are the
 // eager ones, the sampler reproduces a known target, and renders agree with
 // path tracing.
+#include "image_metrics.hpp"
 #include "mlt.hpp"
 #include "sample_layout.hpp"
 #include "test_support.hpp"
@@ -236,13 +237,6 @@ TEST(MltSampler, SplatImageMatchesTheTarget) {
 
 namespace {
 
-double mse(const Image& a, const Image& b) {
-    double s = 0;
-    for (std::size_t i = 0; i < a.rgb.size(); ++i)
-        s += double(a.rgb[i] - b.rgb[i]) * (a.rgb[i] - b.rgb[i]);
-    return s / double(a.rgb.size());
-}
-
 // Path-traced reference: 32 x 32 pixels at 2048 samples each (2.1 M paths,
 // a relative standard error of the image mean near 0.2% on these scenes).
 Image reference(const DeviceScene& ds) {
@@ -271,7 +265,7 @@ TEST_P(MltRender, MeanMatchesPathTracingAndErrorFalls) {
     std::vector<double> errors;
     for (std::uint32_t steps : {8u, 24u, 96u}) {
         mlt.step(steps);
-        errors.push_back(mse(mlt.image(), ref));
+        errors.push_back(image_mse(mlt.image(), ref));
     }
     double m = mlt.image().mean_luminance(), r = ref.mean_luminance();
     std::printf("%s: b %.5f (+-%.2f%%), MLT mean %.5f, PT mean %.5f, MSE %.4g %.4g %.4g\n",

@@ -1,0 +1,58 @@
+#!/bin/sh
+# The paper's Figure 1 on cornell-water: MLT without burn-in (large step 0.5),
+# MLT with OMC burn-in (the defaults) and PT, each rendered for the same wall
+# times; images at three of them side by side, and error (MSE against a long
+# PT reference, linear HDR) against time for all three in one log-log chart.
+# Writes bench/results/burnin/. Usage: bench/burnin.sh [BIN]
+set -eu
+BIN=${1:-build/smallmlt}
+SCENE=${SCENE:-cornell-water}
+SIZE=${SIZE:-128}
+TIMES=${TIMES:-1 2 4 8 16 32}
+SHOW=${SHOW:-2 8 32} # time points in the picture
+OUT=bench/results/burnin
+mkdir -p "$OUT"
+ref=$(sh bench/reference.sh "$BIN" "$SCENE" "$SIZE")
+csv="$OUT/error.csv"
+echo "method,seconds,mse,rel_mse" > "$csv"
+common="scenes/$SCENE.scene --width $SIZE --height $SIZE --seed 7 --quiet"
+for t in $TIMES; do
+    "$BIN" render $common --method mlt --burn-in none --large-step 0.5 --time "$t" \
+        --out "$OUT/none-$t.pfm" --out "$OUT/none-$t.png"
+    "$BIN" render $common --method mlt --time "$t" --out "$OUT/omc-$t.pfm" --out "$OUT/omc-$t.png"
+    "$BIN" render $common --method pt --time "$t" --out "$OUT/pt-$t.pfm" --out "$OUT/pt-$t.png"
+    for m in none omc pt; do
+        "$BIN" compare "$OUT/$m-$t.pfm" "$ref" |
+            awk -v m="$m" -v t="$t" '{print m "," t "," $2 "," $4}' >> "$csv"
+    done
+done
+cat "$csv"
+
+set -- $SHOW
+{
+    echo "set terminal pngcairo size 900,640 font ',10'"
+    echo "set output '$OUT/figure1.png'"
+    echo "set multiplot layout 2,3"
+    echo "unset border; unset tics; unset key; set size ratio -1"
+    for row in none omc; do
+        label="without burn-in, large step 0.5"
+        [ "$row" = omc ] && label="OMC burn-in (defaults)"
+        for t in "$@"; do
+            echo "set title '$label, $t s'"
+            echo "plot '$OUT/$row-$t.png' binary filetype=png with rgbimage"
+        done
+    done
+    echo "unset multiplot"
+} | gnuplot
+{
+    echo "set terminal pngcairo size 640,420 font ',10'"
+    echo "set output '$OUT/error.png'"
+    echo "set datafile separator ','"
+    echo "set logscale xy; set grid"
+    echo "set xlabel 'wall time (s)'; set ylabel 'MSE against PT reference'"
+    echo "set title '$SCENE ${SIZE}x$SIZE'"
+    echo "plot '< grep ^none $csv' using 2:3 with linespoints title 'MLT, no burn-in, large step 0.5', \\"
+    echo "     '< grep ^omc $csv' using 2:3 with linespoints title 'MLT, OMC burn-in', \\"
+    echo "     '< grep ^pt $csv' using 2:3 with linespoints title 'PT'"
+} | gnuplot
+echo "wrote $OUT/figure1.png and $OUT/error.png"
