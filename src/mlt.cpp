@@ -162,6 +162,10 @@ std::vector<std::string> MltRenderer::notes() const {
         out.push_back("no OMC sample of " +
                       std::to_string(std::uint64_t(opt_.chains) * opt_.burn_in_iters) +
                       " carried light (b = 0): the image is black; is the scene lit?");
+    else if (prepared_ && iterations_ == 0)
+        out.push_back("no MLT step ran in the time given: burn-in took " +
+                      std::to_string(prepare_seconds_) +
+                      " s; give more time or fewer --burn-in-iters");
     return out;
 }
 
