@@ -15,6 +15,7 @@ const char* usage_text() {
 
 Usage:
   smallmlt render SCENE [options]   render a .scene file
+  smallmlt budget SCENE [options]   device memory per bounce depth, without rendering
   smallmlt compare IMAGE REFERENCE  error of IMAGE against REFERENCE (.pfm or .exr):
                                     MSE and relative MSE on linear values
   smallmlt devices                  list OpenCL devices and their memory
@@ -35,14 +36,26 @@ Render options:
   --device INDEX     OpenCL device from `smallmlt devices` (default 0)
   --quiet            no progress bar and no summary line
 
+  --device-mem BYTES use at most this much device memory, as if the device had
+                     only BYTES (suffixes K, M, G); its largest buffer is BYTES/4
+
 MLT options:
-  --threads N        number of chains (default 65536)
+  --threads N|auto   number of chains (default auto: enough to keep the device
+                     busy, halved until the render fits in half the device memory)
   --burn-in omc|none start chains at OMC samples picked in proportion to their
                      luminance (default), or at fresh OMC samples
   --burn-in-iters T  OMC rounds of one sample per chain (default 32); all of them
                      estimate the normalization b
   --large-step P     probability that a mutation draws a whole new path
                      (default 0.1 with burn-in, 0.5 without)
+
+Budget options:
+  --threads N|auto   as for render (default auto)
+  --proposals K      proposals per chain: N threads keep N/K chain states (default 1)
+  --depth D          report depths 1..D (default: the scene's depth)
+  --device-mem BYTES as for render
+  --format table|csv|json
+  --device INDEX
 
 Exit status: 0 success, 1 bad input or device error, 2 bad command line.
 The scene format is described in doc/scene-format.md.
@@ -86,6 +99,31 @@ std::uint64_t to_u64(const std::string& flag, const std::string& v) {
     if (v.empty() || v[0] == '-' || *end != '\0' || errno == ERANGE)
         throw UsageError(flag + ": '" + v + "' is not a non-negative integer");
     return x;
+}
+
+std::uint64_t to_bytes(const std::string& flag, const std::string& v) {
+    char* end = nullptr;
+    errno = 0;
+    unsigned long long x = std::strtoull(v.c_str(), &end, 10);
+    std::uint64_t scale = 1;
+    std::string suffix = end ? end : "";
+    if (suffix == "K" || suffix == "k")
+        scale = 1ull << 10;
+    else if (suffix == "M" || suffix == "m")
+        scale = 1ull << 20;
+    else if (suffix == "G" || suffix == "g")
+        scale = 1ull << 30;
+    else if (!suffix.empty())
+        scale = 0;
+    if (v.empty() || v[0] == '-' || end == v.c_str() || scale == 0 || errno == ERANGE || x == 0 ||
+        x > (~0ull) / scale)
+        throw UsageError(flag + ": '" + v + "' is not a size in bytes (e.g. 65536, 64K, 16M, 1G)");
+    return x * scale;
+}
+
+std::optional<std::uint32_t> to_threads(const std::string& flag, const std::string& v) {
+    if (v == "auto") return std::nullopt;
+    return std::uint32_t(to_int(flag, v, 1, 1 << 26));
 }
 
 double to_unit_interval(const std::string& flag, const std::string& v) {
@@ -137,7 +175,9 @@ RenderOptions parse_render(ArgReader& r) {
         } else if (flag == "--burn-in-iters") {
             o.burn_in_iters = std::uint32_t(to_int(flag, r.value(flag, arg), 1, 1 << 16));
         } else if (flag == "--threads") {
-            o.threads = std::uint32_t(to_int(flag, r.value(flag, arg), 1, 1 << 26));
+            o.threads = to_threads(flag, r.value(flag, arg));
+        } else if (flag == "--device-mem") {
+            o.device_mem = to_bytes(flag, r.value(flag, arg));
         } else if (flag == "--spp") {
             o.spp = std::uint32_t(to_int(flag, r.value(flag, arg), 1, 1 << 30));
         } else if (flag == "--time") {
@@ -175,6 +215,46 @@ RenderOptions parse_render(ArgReader& r) {
     return o;
 }
 
+BudgetOptions parse_budget(ArgReader& r) {
+    BudgetOptions o;
+    while (!r.done()) {
+        std::string arg = r.next();
+        std::string flag = arg.substr(0, arg.find('='));
+        if (flag == "--threads") {
+            o.threads = to_threads(flag, r.value(flag, arg));
+        } else if (flag == "--proposals") {
+            long long k = to_int(flag, r.value(flag, arg), 1, 1024);
+            if (k & (k - 1))
+                throw UsageError("--proposals: " + std::to_string(k) + " is not a power of two");
+            o.proposals = std::uint32_t(k);
+        } else if (flag == "--depth") {
+            o.depth = int(to_int(flag, r.value(flag, arg), 1, kMaxDepth));
+        } else if (flag == "--device-mem") {
+            o.device_mem = to_bytes(flag, r.value(flag, arg));
+        } else if (flag == "--device") {
+            o.device = int(to_int(flag, r.value(flag, arg), 0, 1 << 20));
+        } else if (flag == "--format") {
+            std::string f = r.value(flag, arg);
+            if (f == "table")
+                o.format = BudgetFormat::Table;
+            else if (f == "csv")
+                o.format = BudgetFormat::Csv;
+            else if (f == "json")
+                o.format = BudgetFormat::Json;
+            else
+                throw UsageError("--format: '" + f + "' is not a format (table, csv or json)");
+        } else if (arg.rfind("-", 0) == 0) {
+            throw UsageError("unknown option " + flag + " (see smallmlt --help)");
+        } else if (o.scene.empty()) {
+            o.scene = arg;
+        } else {
+            throw UsageError("unexpected argument '" + arg + "': one scene at a time");
+        }
+    }
+    if (o.scene.empty()) throw UsageError("budget: no scene file given");
+    return o;
+}
+
 } // namespace
 
 Command parse_command_line(int argc, const char* const* argv) {
@@ -189,6 +269,9 @@ Command parse_command_line(int argc, const char* const* argv) {
     } else if (cmd == "devices") {
         c.kind = CommandKind::Devices;
         if (!r.done()) throw UsageError("devices: unexpected argument '" + r.next() + "'");
+    } else if (cmd == "budget") {
+        c.kind = CommandKind::Budget;
+        c.budget = parse_budget(r);
     } else if (cmd == "compare") {
         c.kind = CommandKind::Compare;
         if (r.done()) throw UsageError("compare: give IMAGE and REFERENCE");
@@ -206,7 +289,7 @@ Command parse_command_line(int argc, const char* const* argv) {
         c.render = parse_render(r);
     } else {
         throw UsageError("unknown command '" + cmd +
-                         "' (expected render, compare or devices; see --help)");
+                         "' (expected render, budget, compare or devices; see --help)");
     }
     return c;
 }

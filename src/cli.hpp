@@ -19,8 +19,9 @@ enum class Method { Pt, Mlt };
 struct RenderOptions {
     std::string scene;
     Method method = Method::Mlt;
-    std::optional<float> large_step; // default depends on burn-in
-    std::uint32_t threads = MltOptions().chains;
+    std::optional<float> large_step;      // default depends on burn-in
+    std::optional<std::uint32_t> threads; // unset: auto (src/memory_plan.hpp)
+    std::optional<std::uint64_t> device_mem;
     bool burn_in = true;
     std::uint32_t burn_in_iters = MltOptions().burn_in_iters;
     std::optional<std::uint32_t> spp;
@@ -32,11 +33,24 @@ struct RenderOptions {
     bool quiet = false;
 };
 
-enum class CommandKind { Render, Compare, Devices, Help, Version };
+enum class CommandKind { Render, Budget, Compare, Devices, Help, Version };
+
+enum class BudgetFormat { Table, Csv, Json };
+
+struct BudgetOptions {
+    std::string scene;
+    std::optional<std::uint32_t> threads; // unset: auto
+    std::uint32_t proposals = 1;
+    std::optional<int> depth;
+    std::optional<std::uint64_t> device_mem;
+    BudgetFormat format = BudgetFormat::Table;
+    int device = 0;
+};
 
 struct Command {
     CommandKind kind = CommandKind::Help;
     RenderOptions render;
+    BudgetOptions budget;
     std::string image, reference; // compare
 };
 

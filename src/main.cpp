@@ -22,6 +22,8 @@ int main(int argc, char** argv) {
         case CommandKind::Version:
             std::printf("smallmlt %s\n", SMALLMLT_VERSION);
             return 0;
+        case CommandKind::Budget:
+            return run_budget(c.budget);
         case CommandKind::Compare:
             return run_compare(c.image, c.reference);
         case CommandKind::Devices:

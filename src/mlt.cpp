@@ -52,16 +52,16 @@ std::uint32_t mlt_words_per_chain(const SampleLayout& layout, bool float32_state
 
 MltRenderer::MltRenderer(const ClContext& cl, const DeviceScene& ds, const MltOptions& opt)
     : cl_(cl), ds_(require_atomics(cl, ds)), opt_(opt),
+      plan_(plan_mlt(ds, ChainShape{opt.chains, 1, opt.float32_states},
+                     scan_work_group(cl.device()))),
       program_(cl.build(mlt_program_files(opt), program_defines(cl, ds, opt))),
       k_lum_(program_.p, "mlt_luminance"), k_init_(program_.p, "mlt_init"),
       k_step_(program_.p, "mlt_step"), k_pick_(program_.p, "burnin_pick"), scene_(cl, ds),
-      state_(cl, CL_MEM_READ_WRITE,
-             std::size_t(mlt_words_per_chain(ds.layout, opt.float32_states)) * opt.chains *
-                 sizeof(cl_uint)),
-      values_(cl, CL_MEM_READ_WRITE, std::size_t(opt.chains) * sizeof(ChainValue)),
-      splat_(cl, CL_MEM_READ_WRITE, pixels() * 3 * sizeof(cl_ulong)),
-      stats_(cl, CL_MEM_READ_WRITE, MLT_STAT_COUNT * sizeof(cl_ulong)),
-      picks_(cl, CL_MEM_READ_WRITE, std::size_t(opt.chains) * sizeof(cl_uint)) {
+      state_(cl, CL_MEM_READ_WRITE, plan_.bytes("state")),
+      values_(cl, CL_MEM_READ_WRITE, plan_.bytes("values")),
+      splat_(cl, CL_MEM_READ_WRITE, plan_.bytes("splat")),
+      stats_(cl, CL_MEM_READ_WRITE, plan_.bytes("stats")),
+      picks_(cl, CL_MEM_READ_WRITE, plan_.bytes("picks")) {
     state_.fill_zero(cl);
     splat_.fill_zero(cl);
     stats_.fill_zero(cl);
@@ -70,8 +70,8 @@ MltRenderer::MltRenderer(const ClContext& cl, const DeviceScene& ds, const MltOp
 
 void MltRenderer::sample_starts() {
     const std::uint32_t m = opt_.chains, iters = std::max(1u, opt_.burn_in_iters);
-    ClBuffer lum(cl_, CL_MEM_READ_WRITE, std::size_t(m) * sizeof(float));
-    ClBuffer scan(cl_, CL_MEM_READ_WRITE, std::size_t(m) * sizeof(float));
+    ClBuffer lum(cl_, CL_MEM_READ_WRITE, plan_.bytes("luminance"));
+    ClBuffer scan(cl_, CL_MEM_READ_WRITE, plan_.bytes("scan"));
     DeviceScan scanner(cl_, program_.p, m, sizeof(float));
     std::vector<float> host(m);
     double sum = 0, sum2 = 0;

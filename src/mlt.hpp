@@ -5,6 +5,7 @@
 #include "device_scene.hpp"
 #include "image.hpp"
 #include "integrator.hpp"
+#include "memory_plan.hpp"
 #include "ocl.hpp"
 #include "scene_buffers.hpp"
 
@@ -85,6 +86,7 @@ class MltRenderer : public Integrator {
     const ClContext& cl_;
     const DeviceScene& ds_;
     MltOptions opt_;
+    MemoryPlan plan_; // sizes of every buffer below (src/memory_plan.cpp)
     ClProgram program_;
     ClKernel k_lum_, k_init_, k_step_, k_pick_;
     SceneBuffers scene_;

@@ -190,27 +190,37 @@ cl_program ClContext::build(const std::vector<std::string>& files,
     return prog;
 }
 
+void ClContext::count_alloc(std::int64_t bytes) const {
+    live_bytes_ = std::uint64_t(std::int64_t(live_bytes_) + bytes);
+    if (live_bytes_ > peak_bytes_) peak_bytes_ = live_bytes_;
+}
+
 ClBuffer::ClBuffer(const ClContext& cl, cl_mem_flags flags, std::size_t bytes, const void* host)
-    : bytes_(bytes) {
+    : cl_(&cl), bytes_(bytes) {
     cl_int err = CL_SUCCESS;
-    // A zero-sized buffer is invalid in OpenCL; keep one element's worth.
-    std::size_t n = bytes ? bytes : 16;
+    std::size_t n = device_alloc_bytes(bytes);
     mem_ = clCreateBuffer(cl.context(), flags | (host && bytes ? CL_MEM_COPY_HOST_PTR : 0), n,
                           bytes ? const_cast<void*>(host) : nullptr, &err);
-    CL_CHECK(err);
+    if (err != CL_SUCCESS)
+        throw InputError("clCreateBuffer of " + std::to_string(n) +
+                         " bytes failed: " + cl_error_name(err));
+    cl.count_alloc(std::int64_t(n));
 }
 
 ClBuffer::~ClBuffer() {
-    if (mem_) clReleaseMemObject(mem_);
+    if (!mem_) return;
+    clReleaseMemObject(mem_);
+    cl_->count_alloc(-std::int64_t(device_alloc_bytes(bytes_)));
 }
 
-ClBuffer::ClBuffer(ClBuffer&& o) noexcept : mem_(o.mem_), bytes_(o.bytes_) {
+ClBuffer::ClBuffer(ClBuffer&& o) noexcept : cl_(o.cl_), mem_(o.mem_), bytes_(o.bytes_) {
     o.mem_ = nullptr;
 }
 
 ClBuffer& ClBuffer::operator=(ClBuffer&& o) noexcept {
     if (this != &o) {
-        if (mem_) clReleaseMemObject(mem_);
+        this->~ClBuffer();
+        cl_ = o.cl_;
         mem_ = o.mem_;
         bytes_ = o.bytes_;
         o.mem_ = nullptr;

@@ -41,6 +41,13 @@ class ClContext {
     const DeviceInfo& device() const { return info_; }
     cl_context context() const { return ctx_; }
     cl_command_queue queue() const { return queue_; }
+
+    // Device memory held by ClBuffers of this context now, and the most held
+    // at once since the last reset_peak (src/memory_plan.cpp predicts it).
+    std::uint64_t live_bytes() const { return live_bytes_; }
+    std::uint64_t peak_bytes() const { return peak_bytes_; }
+    void reset_peak() const { peak_bytes_ = live_bytes_; }
+    void count_alloc(std::int64_t bytes) const;
     // Waits for all queued work; throws naming `what` if it failed.
     void finish(const std::string& what) const;
 
@@ -53,7 +60,14 @@ class ClContext {
     DeviceInfo info_;
     cl_context ctx_ = nullptr;
     cl_command_queue queue_ = nullptr;
+    mutable std::uint64_t live_bytes_ = 0, peak_bytes_ = 0;
 };
+
+// Bytes a ClBuffer of `bytes` takes on the device: OpenCL has no empty
+// buffers, so an empty one takes 16.
+inline std::uint64_t device_alloc_bytes(std::uint64_t bytes) {
+    return bytes ? bytes : 16;
+}
 
 // A device buffer released on destruction.
 class ClBuffer {
@@ -74,6 +88,7 @@ class ClBuffer {
     void fill_zero(const ClContext& cl) const;
 
   private:
+    const ClContext* cl_ = nullptr;
     cl_mem mem_ = nullptr;
     std::size_t bytes_ = 0;
 };

@@ -13,10 +13,10 @@ const std::vector<std::string>& pt_program_files() {
 }
 
 PathTracer::PathTracer(const ClContext& cl, const DeviceScene& ds, std::uint64_t seed)
-    : cl_(cl), ds_(ds), seed_(seed), program_(cl.build(pt_program_files(), ds.layout.defines())),
-      kernel_(program_.p, "pt_render"), scene_(cl, ds),
-      accum_(cl, CL_MEM_READ_WRITE, pixels() * 4 * sizeof(float)),
-      ray_count_(cl, CL_MEM_READ_WRITE, pixels() * sizeof(cl_ulong)) {
+    : cl_(cl), ds_(ds), seed_(seed), plan_(plan_pt(ds)),
+      program_(cl.build(pt_program_files(), ds.layout.defines())), kernel_(program_.p, "pt_render"),
+      scene_(cl, ds), accum_(cl, CL_MEM_READ_WRITE, plan_.bytes("accumulator")),
+      ray_count_(cl, CL_MEM_READ_WRITE, plan_.bytes("ray counts")) {
     accum_.fill_zero(cl);
     ray_count_.fill_zero(cl);
 }

@@ -4,6 +4,7 @@
 #include "device_scene.hpp"
 #include "image.hpp"
 #include "integrator.hpp"
+#include "memory_plan.hpp"
 #include "ocl.hpp"
 #include "scene_buffers.hpp"
 
@@ -40,6 +41,7 @@ class PathTracer : public Integrator {
     const DeviceScene& ds_;
     std::uint64_t seed_;
     std::uint32_t spp_ = 0;
+    MemoryPlan plan_; // sizes of the buffers below (src/memory_plan.cpp)
     ClProgram program_;
     ClKernel kernel_;
     SceneBuffers scene_;

@@ -2,6 +2,7 @@
 
 #include "error.hpp"
 #include "image_metrics.hpp"
+#include "memory_plan.hpp"
 #include "mlt.hpp"
 #include "path_tracer.hpp"
 #include "progress.hpp"
@@ -38,11 +39,46 @@ constexpr double kPassSeconds = 0.25; // target duration of one kernel launch
 
 } // namespace
 
+// Thread count for MLT (auto or checked) such that the render fits the
+// device; PT only has to fit. Says what it chose unless quiet.
+std::uint32_t fit_to_device(const RenderOptions& o, const ClContext& cl, const DeviceScene& ds) {
+    DeviceBudget budget = device_budget(cl.device(), o.device_mem);
+    std::string allowed =
+        format_bytes(std::uint64_t(kMemoryFraction * double(budget.global_bytes)));
+    if (o.method == Method::Pt) {
+        MemoryPlan plan = plan_pt(ds);
+        if (!plan_fits(plan, budget))
+            throw InputError("not enough device memory: a " + std::to_string(ds.frame.width) + "x" +
+                             std::to_string(ds.frame.height) + " path-traced film needs " +
+                             format_bytes(plan.total()) + " (largest buffer " +
+                             format_bytes(plan.largest()) + "); the device allows " + allowed +
+                             " (max allocation " + format_bytes(budget.max_alloc_bytes) + ")");
+        return 0;
+    }
+    ChainShape shape;
+    if (o.threads) {
+        shape.threads = *o.threads;
+        MemoryPlan plan = check_threads(ds, shape, cl.device(), budget);
+        if (!o.quiet)
+            std::printf("threads: %u (given); device memory %s of %s allowed\n", *o.threads,
+                        format_bytes(plan.total()).c_str(), allowed.c_str());
+        return *o.threads;
+    }
+    ThreadChoice c = choose_threads(ds, shape, cl.device(), budget);
+    if (!o.quiet)
+        std::printf("threads: %u (auto: %u halved to fit, reduction %ux); device memory %s of %s "
+                    "allowed\n",
+                    c.threads, busy_threads(cl.device()), c.reduction,
+                    format_bytes(c.plan.total()).c_str(), allowed.c_str());
+    return c.threads;
+}
+
 std::unique_ptr<Integrator> make_integrator(const RenderOptions& o, const ClContext& cl,
                                             const DeviceScene& ds) {
+    std::uint32_t threads = fit_to_device(o, cl, ds);
     if (o.method == Method::Pt) return std::make_unique<PathTracer>(cl, ds, o.seed);
     MltOptions m;
-    m.chains = o.threads;
+    m.chains = threads;
     m.large_step = *o.large_step;
     m.seed = o.seed;
     m.burn_in = o.burn_in;

@@ -13,27 +13,32 @@ std::string scan_defines(const DeviceInfo& dev) {
     return "#define SCAN_WG " + std::to_string(scan_work_group(dev)) + "u\n";
 }
 
+std::vector<std::size_t> scan_levels(std::size_t n, std::size_t wg) {
+    std::vector<std::size_t> levels;
+    for (std::size_t per_block = 2 * wg; n > per_block;) {
+        n = (n + per_block - 1) / per_block;
+        levels.push_back(n);
+    }
+    return levels;
+}
+
+std::uint64_t scan_bytes(std::size_t n, std::size_t wg, std::size_t element_bytes) {
+    std::uint64_t b = device_alloc_bytes(element_bytes);
+    for (std::size_t count : scan_levels(n, wg))
+        b += 2 * device_alloc_bytes(count * element_bytes);
+    return b;
+}
+
 DeviceScan::DeviceScan(const ClContext& cl, cl_program program, std::size_t max_n,
                        std::size_t element_bytes)
     : cl_(cl), wg_(scan_work_group(cl.device())), blocks_(program, "scan_blocks"),
       add_(program, "scan_add") {
-    std::size_t per_block = 2 * wg_;
-    for (std::size_t n = max_n; n > per_block;) {
-        n = (n + per_block - 1) / per_block;
+    for (std::size_t n : scan_levels(max_n, wg_)) {
         sums_.emplace_back(cl, CL_MEM_READ_WRITE, n * element_bytes);
         prefix_.emplace_back(cl, CL_MEM_READ_WRITE, n * element_bytes);
     }
     // The last level is a single block whose total is written but not used.
     sums_.emplace_back(cl, CL_MEM_READ_WRITE, element_bytes);
-}
-
-std::size_t DeviceScan::bytes() const {
-    std::size_t b = 0;
-    for (const ClBuffer& x : sums_)
-        b += x.bytes();
-    for (const ClBuffer& x : prefix_)
-        b += x.bytes();
-    return b;
 }
 
 void DeviceScan::run(const ClBuffer& in, const ClBuffer& out, std::size_t n) {

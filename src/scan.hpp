@@ -12,6 +12,12 @@ namespace smallmlt {
 std::size_t scan_work_group(const DeviceInfo& dev);
 std::string scan_defines(const DeviceInfo& dev);
 
+// Elements of the block totals at each level of a scan of n elements; the
+// scan holds two buffers of that many per level and one more element.
+std::vector<std::size_t> scan_levels(std::size_t n, std::size_t wg);
+// Device bytes of those buffers, as DeviceScan allocates them.
+std::uint64_t scan_bytes(std::size_t n, std::size_t wg, std::size_t element_bytes);
+
 class DeviceScan {
   public:
     // Scans of up to max_n elements of `element_bytes` each with the
@@ -20,8 +26,6 @@ class DeviceScan {
                std::size_t element_bytes);
     // out[i] = in[0] + ... + in[i] for i < n (queued; not waited for).
     void run(const ClBuffer& in, const ClBuffer& out, std::size_t n);
-    // Bytes of the buffers it holds for block totals.
-    std::size_t bytes() const;
 
   private:
     void run_level(const ClBuffer& in, const ClBuffer& out, std::size_t n, std::size_t level);

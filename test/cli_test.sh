@@ -73,6 +73,17 @@ printf 'newmtl grey\nKd 0.5 0.5 0.5\n' > "$DIR/dark.mtl"
 printf 'mtllib dark.mtl\nv -1 0 -1\nv 1 0 -1\nv 0 2 -1\nusemtl grey\nf 1 2 3\n' > "$DIR/dark.obj"
 printf 'camera 0 1 3  0 1 0  0 1 0  40\nmesh dark.obj\n' > "$DIR/dark.scene"
 check black_scene 0 "carried light (b = 0): the image is black" -- "$BIN" render "$DIR/dark.scene" --width 8 --height 8 --threads 64 --out "$DIR/dark.pfm"
+check device_mem_tiny 1 "not enough device memory" -- "$BIN" render scenes/cornell-water.scene --device-mem 64K --out "$DIR/tiny.png"
+absent device_mem_tiny_no_file "$DIR/tiny.png"
+check threads_too_many 2 "threads fit (or use --threads auto)" -- "$BIN" render scenes/cornell-water.scene --threads 4000000 --device-mem 64M --out "$DIR/many.png"
+absent threads_too_many_no_file "$DIR/many.png"
+check device_mem_bad 2 "--device-mem: '12Q' is not a size in bytes" -- "$BIN" render scenes/cornell.scene --device-mem 12Q
+check budget_table 0 "B/chain pack" -- "$BIN" budget scenes/cornell-water.scene --depth 4
+check budget_csv 0 "depth,bits_per_bounce,chain_bytes_packed" -- "$BIN" budget scenes/cornell.scene --format csv --threads 1024
+check budget_json 0 "\"reduction\":" -- "$BIN" budget scenes/cornell.scene --format json --threads 1024 --proposals 4
+check budget_proposals 2 "--proposals: 3 is not a power of two" -- "$BIN" budget scenes/cornell.scene --proposals 3
+check budget_small 0 "(--device-mem)" -- "$BIN" budget scenes/cornell-water.scene --device-mem 64M
+check budget_too_small 1 "it would take 24.0 MiB of device memory" -- "$BIN" budget scenes/cornell-water.scene --device-mem 16M
 check method_bad 2 "--method: 'bdpt' is not a method" -- "$BIN" render scenes/cornell.scene --method bdpt
 check large_step_range 2 "--large-step: '1.5' is not a probability" -- "$BIN" render scenes/cornell.scene --large-step 1.5
 check threads_zero 2 "--threads: 0 is out of range" -- "$BIN" render scenes/cornell.scene --threads 0

@@ -1,0 +1,122 @@
+// Memory budget: the plan predicts exactly what a render allocates, and the
+// thread count follows the device memory and its largest allocation.
+#include "error.hpp"
+#include "memory_plan.hpp"
+#include "mlt.hpp"
+#include "scan.hpp"
+#include "test_support.hpp"
+
+#include <gtest/gtest.h>
+
+using namespace smallmlt;
+
+namespace {
+
+struct Case {
+    const char* scene;
+    std::uint32_t threads;
+    int depth;
+};
+
+// Device bytes a full MLT render (burn-in, steps, image) allocates at its peak.
+std::uint64_t mlt_peak(const DeviceScene& ds, std::uint32_t threads) {
+    const ClContext& cl = test::cl();
+    std::uint64_t before = cl.live_bytes();
+    cl.reset_peak();
+    {
+        MltOptions opt;
+        opt.chains = threads;
+        opt.burn_in_iters = 2;
+        MltRenderer mlt(cl, ds, opt);
+        mlt.prepare();
+        mlt.step(1);
+        mlt.image();
+    }
+    EXPECT_EQ(cl.live_bytes(), before) << "buffers leaked";
+    return cl.peak_bytes() - before;
+}
+
+} // namespace
+
+TEST(MemoryPlan, PredictsWhatMltRendersAllocate) {
+    for (Case c : {Case{"cornell-water", 1024, 24}, Case{"cornell", 4096, 3},
+                   Case{"cornell-glass", 700, 16}, Case{"ajar", 64, 1}}) {
+        DeviceScene ds = prepare_scene(test::scene(c.scene, 24, 16, c.depth));
+        MemoryPlan plan =
+            plan_mlt(ds, ChainShape{c.threads, 1, false}, scan_work_group(test::cl().device()));
+        EXPECT_EQ(mlt_peak(ds, c.threads), plan.total()) << c.scene << " N " << c.threads;
+    }
+}
+
+TEST(MemoryPlan, PredictsWhatPathTracingAllocates) {
+    DeviceScene ds = prepare_scene(test::scene("cornell-glass", 40, 30));
+    const ClContext& cl = test::cl();
+    std::uint64_t before = cl.live_bytes();
+    cl.reset_peak();
+    test::render_pt(ds, 1, 1);
+    EXPECT_EQ(cl.peak_bytes() - before, plan_pt(ds).total());
+}
+
+// Proposals per chain divide the chain states, not the per-thread buffers.
+TEST(MemoryPlan, ProposalsShareChainStates) {
+    DeviceScene ds = prepare_scene(test::scene("cornell-water", 16, 16));
+    std::size_t wg = scan_work_group(test::cl().device());
+    MemoryPlan k1 = plan_mlt(ds, ChainShape{4096, 1, false}, wg);
+    MemoryPlan k4 = plan_mlt(ds, ChainShape{4096, 4, false}, wg);
+    EXPECT_EQ(k4.bytes("state") * 4, k1.bytes("state"));
+    EXPECT_EQ(k4.bytes("values") * 4, k1.bytes("values"));
+    EXPECT_EQ(k4.bytes("luminance"), k1.bytes("luminance"));
+}
+
+// Smaller budgets give fewer threads, and a render with the chosen count
+// stays within the budget's fraction and its largest-allocation limit.
+TEST(ThreadCount, FollowsTheDeviceMemory) {
+    DeviceScene ds = prepare_scene(test::scene("cornell-water", 128, 128));
+    const DeviceInfo& dev = test::cl().device();
+    std::uint32_t previous = ~0u;
+    for (std::uint64_t mib : {256u, 64u, 16u}) {
+        DeviceBudget budget = device_budget(dev, mib << 20);
+        ThreadChoice c = choose_threads(ds, ChainShape{}, dev, budget);
+        EXPECT_LE(c.threads, previous) << mib << " MiB";
+        previous = c.threads;
+        std::uint64_t peak = mlt_peak(ds, c.threads);
+        EXPECT_EQ(peak, c.plan.total());
+        EXPECT_LE(double(peak), kMemoryFraction * double(budget.global_bytes)) << mib << " MiB";
+        EXPECT_LE(c.plan.largest(), budget.max_alloc_bytes) << mib << " MiB";
+    }
+    EXPECT_LT(previous, busy_threads(dev)) << "16 MiB should force fewer threads";
+}
+
+// Total memory to spare, but a single-buffer limit below the state buffer:
+// the count drops until the largest buffer fits.
+TEST(ThreadCount, RespectsTheLargestAllocation) {
+    DeviceScene ds = prepare_scene(test::scene("cornell-water", 64, 64));
+    const DeviceInfo& dev = test::cl().device();
+    DeviceBudget roomy{std::uint64_t(1) << 40, std::uint64_t(1) << 40, false};
+    ThreadChoice free_choice = choose_threads(ds, ChainShape{}, dev, roomy);
+    DeviceBudget capped = roomy;
+    capped.max_alloc_bytes = free_choice.plan.largest() / 3;
+    ThreadChoice c = choose_threads(ds, ChainShape{}, dev, capped);
+    EXPECT_LT(c.threads, free_choice.threads);
+    EXPECT_LE(c.plan.largest(), capped.max_alloc_bytes);
+}
+
+TEST(ThreadCount, TooLittleMemoryNamesWhatWouldDo) {
+    DeviceScene ds = prepare_scene(test::scene("cornell-water", 64, 64));
+    DeviceBudget tiny = device_budget(test::cl().device(), std::uint64_t(64) << 10);
+    try {
+        choose_threads(ds, ChainShape{}, test::cl().device(), tiny);
+        FAIL() << "64 KiB should not fit";
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("it would take"), std::string::npos) << e.what();
+    }
+    ChainShape given;
+    given.threads = 1u << 20;
+    DeviceBudget small = device_budget(test::cl().device(), std::uint64_t(64) << 20);
+    try {
+        check_threads(ds, given, test::cl().device(), small);
+        FAIL() << "2^20 threads should not fit in 64 MiB";
+    } catch (const UsageError& e) {
+        EXPECT_NE(std::string(e.what()).find("threads fit"), std::string::npos) << e.what();
+    }
+}
