@@ -4,19 +4,6 @@
  * over the film position (x, y) = (u0, u1); the film's pixels are the bins of
  * a histogram. test/test_mlt.cpp integrates f over each bin in closed form. */
 
-typedef struct {
-    float3 f;
-    uint pixel;
-    uint bounces;
-    uint rays;
-} MltSample;
-
-inline uint mlt_pixel(const Frame* frame, float fx, float fy) {
-    uint px = min((uint)(fx * (float)frame->width), frame->width - 1u);
-    uint py = min((uint)(fy * (float)frame->height), frame->height - 1u);
-    return py * frame->width + px;
-}
-
 inline float target_value(float x, float y) {
     if (x < 0.25f && y < 0.25f) return 0.0f;
     float s = sin(2.0f * M_PI_F * y);

@@ -142,6 +142,15 @@ double to_seconds(const std::string& flag, const std::string& v) {
     return x;
 }
 
+// What is not a known option: an unknown option is an error, the first
+// other argument is the scene, a second one is an error.
+void take_scene(const std::string& arg, const std::string& flag, std::string& scene) {
+    if (arg.rfind("-", 0) == 0)
+        throw UsageError("unknown option " + flag + " (see smallmlt --help)");
+    if (!scene.empty()) throw UsageError("unexpected argument '" + arg + "': one scene at a time");
+    scene = arg;
+}
+
 std::string default_out(const std::string& scene) {
     std::size_t slash = scene.find_last_of('/');
     std::string base = scene.substr(slash == std::string::npos ? 0 : slash + 1);
@@ -198,12 +207,8 @@ RenderOptions parse_render(ArgReader& r) {
             o.device = int(to_int(flag, r.value(flag, arg), 0, 1 << 20));
         } else if (arg == "--quiet") {
             o.quiet = true;
-        } else if (arg.rfind("-", 0) == 0) {
-            throw UsageError("unknown option " + flag + " (see smallmlt --help)");
-        } else if (o.scene.empty()) {
-            o.scene = arg;
         } else {
-            throw UsageError("unexpected argument '" + arg + "': one scene at a time");
+            take_scene(arg, flag, o.scene);
         }
     }
     if (o.scene.empty()) throw UsageError("render: no scene file given");
@@ -243,12 +248,8 @@ BudgetOptions parse_budget(ArgReader& r) {
                 o.format = BudgetFormat::Json;
             else
                 throw UsageError("--format: '" + f + "' is not a format (table, csv or json)");
-        } else if (arg.rfind("-", 0) == 0) {
-            throw UsageError("unknown option " + flag + " (see smallmlt --help)");
-        } else if (o.scene.empty()) {
-            o.scene = arg;
         } else {
-            throw UsageError("unexpected argument '" + arg + "': one scene at a time");
+            take_scene(arg, flag, o.scene);
         }
     }
     if (o.scene.empty()) throw UsageError("budget: no scene file given");

@@ -10,7 +10,6 @@
 namespace smallmlt {
 
 constexpr std::uint32_t kDefaultSpp = 16;
-constexpr std::uint32_t kDefaultBurnInIters = 8;
 constexpr float kDefaultLargeStepBurnIn = 0.1f;   // with OMC burn-in (doc/RESULTS.md)
 constexpr float kDefaultLargeStepNoBurnIn = 0.5f; // the paper's baseline without
 

@@ -38,9 +38,10 @@ const DeviceScene& require_atomics(const ClContext& cl, const DeviceScene& ds) {
 
 std::vector<std::string> mlt_program_files(const MltOptions& opt) {
     std::vector<std::string> files = {
-        "cl/shared_types.h", "cl/rng.cl",   "cl/layout.cl",      "cl/pss.cl",   "cl/sample_mlt.cl",
-        "cl/geometry.cl",    "cl/bvh.cl",   "cl/bsdf.cl",        "cl/light.cl", "cl/path.cl",
-        "cl/camera.cl",      opt.evaluator, "cl/kernels_mlt.cl", "cl/scan.cl",  "cl/burnin.cl"};
+        "cl/shared_types.h", "cl/rng.cl",         "cl/layout.cl", "cl/pss.cl",
+        "cl/sample_mlt.cl",  "cl/geometry.cl",    "cl/bvh.cl",    "cl/bsdf.cl",
+        "cl/light.cl",       "cl/path.cl",        "cl/camera.cl", "cl/mlt_sample.cl",
+        opt.evaluator,       "cl/kernels_mlt.cl", "cl/scan.cl",   "cl/burnin.cl"};
     files.insert(files.end(), opt.extra_files.begin(), opt.extra_files.end());
     return files;
 }

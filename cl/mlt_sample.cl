@@ -1,0 +1,15 @@
+/* What evaluating a chain's state yields, and which pixel a film position
+ * splats to: shared by every evaluator (eval_path.cl, eval_target.cl). */
+
+typedef struct {
+    float3 f;     /* F: RGB contribution */
+    uint pixel;   /* where it splats */
+    uint bounces; /* live bounces of the state (PathResult.bounces) */
+    uint rays;
+} MltSample;
+
+inline uint mlt_pixel(const Frame* frame, float fx, float fy) {
+    uint px = min((uint)(fx * (float)frame->width), frame->width - 1u);
+    uint py = min((uint)(fy * (float)frame->height), frame->height - 1u);
+    return py * frame->width + px;
+}
