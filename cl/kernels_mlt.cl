@@ -62,34 +62,68 @@ __kernel void mlt_init(__global const Triangle* tris, __global const BvhNode* no
     values[c] = v;
 }
 
-/* One Metropolis step of every chain: propose, splat, accept or reject. A
- * step is large when its stream's number MLT_DIM_LARGE is below
- * large_threshold (= P * 2^32). */
+/* One Metropolis step of every chain with K proposals each: split-transition
+ * MLT (Frolov and Galaktionov, section 3.3, Algorithm 1). Work-item t is
+ * proposal t % K of chain t / K; a chain's K work-items sit in one
+ * work-group (K divides MLT_GROUP) and meet in local memory. Each evaluates
+ * its proposal y_i lazily and splats a_i F(y_i)/I(y_i), a_i = min(1,
+ * I(y_i)/I(x)); the chain's first work-item splats (K - sum a_i) F(x)/I(x)
+ * and picks the next state among (x, y_1..y_K) in proportion to (K - sum a_i,
+ * a_1, .., a_K); the picked work-item commits its proposal. K = 1 is plain
+ * PSSMLT with expected-value splats. A proposal is large when its stream's
+ * number MLT_DIM_LARGE is below large_threshold (= P * 2^32). */
 __kernel void mlt_step(__global const Triangle* tris, __global const BvhNode* nodes,
                        __global const Material* mats, __global const LightEntry* lights,
                        const Frame frame, __global uint* state, __global ChainValue* values,
-                       const uint num_chains, const ulong seed, const uint iteration,
-                       const uint large_threshold, __global ulong* splat, __global ulong* stats) {
-    uint c = get_global_id(0);
-    if (c >= num_chains) return;
+                       const uint num_threads, const uint proposals, const ulong seed,
+                       const uint iteration, const uint large_threshold, __global ulong* splat,
+                       __global ulong* stats) {
+    __local float l_a[MLT_GROUP];
+    __local uint l_next[MLT_GROUP];
+    uint t = get_global_id(0), lid = get_local_id(0);
+    uint chains = num_threads / proposals, c = t / proposals, i = t % proposals;
+    uint first = lid - i; /* the chain's first work-item in this group */
+    bool active = t < num_threads;
     SceneView sc = path_scene(tris, nodes, mats, lights, &frame);
-    ChainValue x = values[c];
-    ulong key = rng_key(seed, c, iteration);
+    ChainValue x = values[active ? c : 0u];
+    float3 fx = (float3)(x.rgb[0], x.rgb[1], x.rgb[2]);
+    float ix = path_luminance(fx);
+    ulong key = rng_key(seed, t, iteration);
     bool large = rng_u32(key, MLT_DIM_LARGE) < large_threshold;
     SampleSource src =
-        smp_chain(state, c, num_chains, key, large ? SMP_LARGE : SMP_SMALL, x.bounces);
-    MltSample y = mlt_checked(mlt_evaluate(&sc, &frame, &src), stats);
-
-    float3 fx = (float3)(x.rgb[0], x.rgb[1], x.rgb[2]);
-    float ix = path_luminance(fx), iy = path_luminance(y.f);
-    float a = ix > 0.0f ? fmin(1.0f, iy / ix) : 1.0f;
-    uint x_pixel = mlt_pixel(&frame, pss_load(state, c, num_chains, layout_film(0u)),
-                             pss_load(state, c, num_chains, layout_film(1u)));
-    mlt_splat(splat, y.pixel, y.f, a);
-    mlt_splat(splat, x_pixel, fx, 1.0f - a);
-
-    float u = (float)(rng_u32(key, MLT_DIM_ACCEPT) >> 8) * (1.0f / 16777216.0f);
-    if (u < a) {
+        smp_chain(state, active ? c : 0u, chains, key, large ? SMP_LARGE : SMP_SMALL, x.bounces);
+    MltSample y;
+    y.rays = 0u;
+    float a = 0.0f;
+    if (active) {
+        y = mlt_checked(mlt_evaluate(&sc, &frame, &src), stats);
+        float iy = path_luminance(y.f);
+        a = ix > 0.0f ? fmin(1.0f, iy / ix) : 1.0f;
+        mlt_splat(splat, y.pixel, y.f, a);
+    }
+    l_a[lid] = a;
+    barrier(CLK_LOCAL_MEM_FENCE);
+    if (active && i == 0u) {
+        float stay = (float)proposals;
+        for (uint j = 0; j < proposals; ++j)
+            stay -= l_a[first + j];
+        stay = fmax(stay, 0.0f);
+        uint x_pixel = mlt_pixel(&frame, pss_load(state, c, chains, layout_film(0u)),
+                                 pss_load(state, c, chains, layout_film(1u)));
+        mlt_splat(splat, x_pixel, fx, stay);
+        float u =
+            (float)(rng_u32(key, MLT_DIM_ACCEPT) >> 8) * (1.0f / 16777216.0f) * (float)proposals;
+        uint next = 0u; /* 0: stay at x; j: move to y_j */
+        float acc = stay;
+        for (uint j = 0; j < proposals && u >= acc; ++j) {
+            if (l_a[first + j] > 0.0f) next = j + 1u; /* float rounding: keep the last one */
+            acc += l_a[first + j];
+        }
+        l_next[lid] = next;
+    }
+    barrier(CLK_LOCAL_MEM_FENCE);
+    if (!active) return;
+    if (l_next[first] == i + 1u) {
         mlt_commit(&src, y.bounces);
         ChainValue v = {{y.f.x, y.f.y, y.f.z}, y.bounces};
         values[c] = v;

@@ -40,8 +40,10 @@ Render options:
                      only BYTES (suffixes K, M, G); its largest buffer is BYTES/4
 
 MLT options:
-  --threads N|auto   number of chains (default auto: enough to keep the device
-                     busy, halved until the render fits in half the device memory)
+  --threads N|auto   threads (default auto: enough to keep the device busy, halved
+                     until the render fits in half the device memory)
+  --proposals K      split-transition MLT: K proposals per chain, N/K chains
+                     (K a power of two up to 64; default 1, plain MLT)
   --burn-in omc|none start chains at OMC samples picked in proportion to their
                      luminance (default), or at fresh OMC samples
   --burn-in-iters T  OMC rounds of one sample per chain (default 32); all of them
@@ -121,6 +123,12 @@ std::uint64_t to_bytes(const std::string& flag, const std::string& v) {
     return x * scale;
 }
 
+std::uint32_t to_proposals(const std::string& flag, const std::string& v) {
+    long long k = to_int(flag, v, 1, 64);
+    if (k & (k - 1)) throw UsageError(flag + ": " + v + " is not a power of two");
+    return std::uint32_t(k);
+}
+
 std::optional<std::uint32_t> to_threads(const std::string& flag, const std::string& v) {
     if (v == "auto") return std::nullopt;
     return std::uint32_t(to_int(flag, v, 1, 1 << 26));
@@ -187,6 +195,8 @@ RenderOptions parse_render(ArgReader& r) {
             o.threads = to_threads(flag, r.value(flag, arg));
         } else if (flag == "--device-mem") {
             o.device_mem = to_bytes(flag, r.value(flag, arg));
+        } else if (flag == "--proposals") {
+            o.proposals = to_proposals(flag, r.value(flag, arg));
         } else if (flag == "--spp") {
             o.spp = std::uint32_t(to_int(flag, r.value(flag, arg), 1, 1 << 30));
         } else if (flag == "--time") {
@@ -228,10 +238,7 @@ BudgetOptions parse_budget(ArgReader& r) {
         if (flag == "--threads") {
             o.threads = to_threads(flag, r.value(flag, arg));
         } else if (flag == "--proposals") {
-            long long k = to_int(flag, r.value(flag, arg), 1, 1024);
-            if (k & (k - 1))
-                throw UsageError("--proposals: " + std::to_string(k) + " is not a power of two");
-            o.proposals = std::uint32_t(k);
+            o.proposals = to_proposals(flag, r.value(flag, arg));
         } else if (flag == "--depth") {
             o.depth = int(to_int(flag, r.value(flag, arg), 1, kMaxDepth));
         } else if (flag == "--device-mem") {

@@ -20,6 +20,7 @@ struct RenderOptions {
     Method method = Method::Mlt;
     std::optional<float> large_step;      // default depends on burn-in
     std::optional<std::uint32_t> threads; // unset: auto (src/memory_plan.hpp)
+    std::uint32_t proposals = 1;          // K: threads per chain
     std::optional<std::uint64_t> device_mem;
     bool burn_in = true;
     std::uint32_t burn_in_iters = MltOptions().burn_in_iters;

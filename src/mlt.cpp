@@ -21,9 +21,22 @@ double seconds_since(std::chrono::steady_clock::time_point t0) {
 }
 
 std::string program_defines(const ClContext& cl, const DeviceScene& ds, const MltOptions& opt) {
-    std::string d = ds.layout.defines() + scan_defines(cl.device());
+    std::string d = ds.layout.defines() + scan_defines(cl.device()) + "#define MLT_GROUP " +
+                    std::to_string(kDefaultWorkGroup) + "u\n";
     if (opt.float32_states) d += "#define PSS_FLOAT32 1\n";
     return d;
+}
+
+// K proposals of a chain share a work-group of kDefaultWorkGroup.
+const MltOptions& check_proposals(const MltOptions& opt) {
+    std::uint32_t k = opt.proposals;
+    if (k == 0 || (k & (k - 1)) || k > kDefaultWorkGroup)
+        throw UsageError("--proposals: " + std::to_string(k) + " is not a power of two up to " +
+                         std::to_string(kDefaultWorkGroup));
+    if (opt.threads % k)
+        throw UsageError("--threads " + std::to_string(opt.threads) + " is not a multiple of " +
+                         "--proposals " + std::to_string(k));
+    return opt;
 }
 
 const DeviceScene& require_atomics(const ClContext& cl, const DeviceScene& ds) {
@@ -52,8 +65,8 @@ std::uint32_t mlt_words_per_chain(const SampleLayout& layout, bool float32_state
 }
 
 MltRenderer::MltRenderer(const ClContext& cl, const DeviceScene& ds, const MltOptions& opt)
-    : cl_(cl), ds_(require_atomics(cl, ds)), opt_(opt),
-      plan_(plan_mlt(ds, ChainShape{opt.chains, 1, opt.float32_states},
+    : cl_(cl), ds_(require_atomics(cl, ds)), opt_(check_proposals(opt)),
+      plan_(plan_mlt(ds, ChainShape{opt.threads, opt.proposals, opt.float32_states},
                      scan_work_group(cl.device()))),
       program_(cl.build(mlt_program_files(opt), program_defines(cl, ds, opt))),
       k_lum_(program_.p, "mlt_luminance"), k_init_(program_.p, "mlt_init"),
@@ -70,7 +83,8 @@ MltRenderer::MltRenderer(const ClContext& cl, const DeviceScene& ds, const MltOp
 }
 
 void MltRenderer::sample_starts() {
-    const std::uint32_t m = opt_.chains, iters = std::max(1u, opt_.burn_in_iters);
+    const std::uint32_t m = opt_.threads, iters = std::max(1u, opt_.burn_in_iters);
+    const std::uint32_t chains = this->chains();
     ClBuffer lum(cl_, CL_MEM_READ_WRITE, plan_.bytes("luminance"));
     ClBuffer scan(cl_, CL_MEM_READ_WRITE, plan_.bytes("scan"));
     DeviceScan scanner(cl_, program_.p, m, sizeof(float));
@@ -91,7 +105,7 @@ void MltRenderer::sample_starts() {
         }
         if (!opt_.burn_in) continue;
         // Round it keeps its share of the m starts (the first m % iters rounds one more).
-        cl_uint count = m / iters + (it < m % iters ? 1u : 0u);
+        cl_uint count = chains / iters + (it < chains % iters ? 1u : 0u);
         scanner.run(lum, scan, m);
         k_pick_.set_args(scan, cl_uint(m), pick_seed, cl_uint(it), first, cl_uint(picked), count,
                          picks_);
@@ -122,8 +136,8 @@ void MltRenderer::prepare() {
 void MltRenderer::init_chains() {
     cl_ulong seed = derive_seed(opt_.seed, kPurposeOmc);
     k_init_.set_args(scene_.tris, scene_.nodes, scene_.mats, scene_.lights, ds_.frame, state_,
-                     values_, cl_uint(opt_.chains), seed, picks_, stats_);
-    k_init_.run(cl_, opt_.chains);
+                     values_, cl_uint(chains()), seed, picks_, stats_);
+    k_init_.run(cl_, chains());
 }
 
 void MltRenderer::step(std::uint32_t n) {
@@ -134,10 +148,11 @@ void MltRenderer::step(std::uint32_t n) {
     for (std::uint32_t i = 0; i < n; ++i) {
         cl_uint iteration = ++iterations_;
         k_step_.set_args(scene_.tris, scene_.nodes, scene_.mats, scene_.lights, ds_.frame, state_,
-                         values_, cl_uint(opt_.chains), seed, iteration, threshold, splat_, stats_);
-        k_step_.enqueue(cl_, opt_.chains);
+                         values_, cl_uint(opt_.threads), cl_uint(opt_.proposals), seed, iteration,
+                         threshold, splat_, stats_);
+        k_step_.enqueue(cl_, opt_.threads);
     }
-    cl_.finish("kernel mlt_step over " + std::to_string(opt_.chains) + " chains");
+    cl_.finish("kernel mlt_step over " + std::to_string(opt_.threads) + " threads");
     step_seconds_ += seconds_since(t0);
 }
 
@@ -149,7 +164,7 @@ MltStats MltRenderer::stats() const {
     cl_ulong s[MLT_STAT_COUNT];
     stats_.read(cl_, s);
     MltStats out;
-    out.mutations = std::uint64_t(iterations_) * opt_.chains;
+    out.mutations = std::uint64_t(iterations_) * opt_.threads;
     out.accepted = s[MLT_STAT_ACCEPTED];
     out.large = s[MLT_STAT_LARGE];
     out.nonfinite = s[MLT_STAT_NONFINITE];
@@ -161,7 +176,7 @@ std::vector<std::string> MltRenderer::notes() const {
     std::vector<std::string> out;
     if (prepared_ && b_ == 0)
         out.push_back("no OMC sample of " +
-                      std::to_string(std::uint64_t(opt_.chains) * opt_.burn_in_iters) +
+                      std::to_string(std::uint64_t(opt_.threads) * opt_.burn_in_iters) +
                       " carried light (b = 0): the image is black; is the scene lit?");
     else if (prepared_ && iterations_ == 0)
         out.push_back("no MLT step ran in the time given: burn-in took " +
@@ -172,18 +187,17 @@ std::vector<std::string> MltRenderer::notes() const {
 
 std::string MltRenderer::summary(double) const {
     MltStats s = stats();
-    char buf[320];
-    std::snprintf(
-        buf, sizeof buf,
-        "%u chains x %u steps (state %u B/chain), %.3f M mutations/s, %.3f M rays/s (steps only; b "
-        "and "
-        "chain start %.2f s), acceptance %.1f%%, large steps %.1f%%, b = %.5g (+-%.2f%%), "
-        "%llu non-finite dropped",
-        opt_.chains, iterations_, state_bytes_per_chain(),
-        double(s.mutations) / step_seconds_ * 1e-6, double(s.rays) / step_seconds_ * 1e-6,
-        prepare_seconds_, s.mutations ? 100.0 * double(s.accepted) / double(s.mutations) : 0.0,
-        s.mutations ? 100.0 * double(s.large) / double(s.mutations) : 0.0, b_, 100.0 * b_rel_error_,
-        static_cast<unsigned long long>(s.nonfinite));
+    double per_s = step_seconds_ > 0 ? 1e-6 / step_seconds_ : 0.0;
+    double per_mutation = s.mutations ? 100.0 / double(s.mutations) : 0.0;
+    char buf[400];
+    std::snprintf(buf, sizeof buf,
+                  "%u chains x %u proposals x %u steps (state %u B/chain), %.3f M mutations/s, "
+                  "%.3f M rays/s (steps only; b and chain start %.2f s), acceptance %.1f%%, "
+                  "large steps %.1f%%, b = %.5g (+-%.2f%%), %llu non-finite dropped",
+                  chains(), opt_.proposals, iterations_, state_bytes_per_chain(),
+                  double(s.mutations) * per_s, double(s.rays) * per_s, prepare_seconds_,
+                  double(s.accepted) * per_mutation, double(s.large) * per_mutation, b_,
+                  100.0 * b_rel_error_, static_cast<unsigned long long>(s.nonfinite));
     return buf;
 }
 
@@ -191,7 +205,7 @@ Image MltRenderer::image() const {
     std::vector<cl_ulong> acc(pixels() * 3);
     splat_.read(cl_, acc.data());
     Image img(int(ds_.frame.width), int(ds_.frame.height));
-    double mutations = double(iterations_) * opt_.chains;
+    double mutations = double(iterations_) * opt_.threads;
     if (mutations == 0) return img;
     double scale = b_ * double(pixels()) / mutations / double(1u << SPLAT_FRAC_BITS);
     for (std::size_t i = 0; i < acc.size(); ++i)

@@ -15,8 +15,9 @@
 namespace smallmlt {
 
 struct MltOptions {
-    std::uint32_t chains = 1u << 16;
-    float large_step = 0.5f; // probability that a step is large
+    std::uint32_t threads = 1u << 16; // N work-items
+    std::uint32_t proposals = 1;      // K proposals per chain: N / K chains (a power of two <= 64)
+    float large_step = 0.5f;          // probability that a step is large
     std::uint64_t seed = 1;
     // Burn-in by OMC (Frolov and Galaktionov, section 3.1): burn_in_iters
     // rounds of one OMC sample per chain; each round keeps chains / iters of
@@ -48,10 +49,10 @@ class MltRenderer : public Integrator {
     void prepare() override;
     void advance(std::uint32_t units) override { step(units); }
     std::uint64_t units_for_spp(std::uint32_t spp) const override {
-        return (std::uint64_t(spp) * pixels() + opt_.chains - 1) / opt_.chains;
+        return (std::uint64_t(spp) * pixels() + opt_.threads - 1) / opt_.threads;
     }
     double spp_done() const override {
-        return double(iterations_) * opt_.chains / double(pixels());
+        return double(iterations_) * opt_.threads / double(pixels());
     }
     std::string summary(double seconds) const override;
     // No OMC sample carried light: the image is black whatever the chains do.
@@ -70,6 +71,7 @@ class MltRenderer : public Integrator {
     void step(std::uint32_t n);
 
     std::uint32_t iterations() const { return iterations_; }
+    std::uint32_t chains() const { return opt_.threads / opt_.proposals; }
     std::uint64_t pixels() const { return std::uint64_t(ds_.frame.width) * ds_.frame.height; }
     MltStats stats() const;
     // Packed numbers plus the ChainValue (F(x), live bounces).

@@ -56,7 +56,11 @@ std::uint32_t fit_to_device(const RenderOptions& o, const ClContext& cl, const D
         return 0;
     }
     ChainShape shape;
+    shape.proposals = o.proposals;
     if (o.threads) {
+        if (*o.threads % o.proposals)
+            throw UsageError("--threads " + std::to_string(*o.threads) + " is not a multiple of " +
+                             "--proposals " + std::to_string(o.proposals));
         shape.threads = *o.threads;
         MemoryPlan plan = check_threads(ds, shape, cl.device(), budget);
         if (!o.quiet)
@@ -78,7 +82,8 @@ std::unique_ptr<Integrator> make_integrator(const RenderOptions& o, const ClCont
     std::uint32_t threads = fit_to_device(o, cl, ds);
     if (o.method == Method::Pt) return std::make_unique<PathTracer>(cl, ds, o.seed);
     MltOptions m;
-    m.chains = threads;
+    m.threads = threads;
+    m.proposals = o.proposals;
     m.large_step = *o.large_step;
     m.seed = o.seed;
     m.burn_in = o.burn_in;

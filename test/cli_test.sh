@@ -84,6 +84,10 @@ check budget_json 0 "\"reduction\":" -- "$BIN" budget scenes/cornell.scene --for
 check budget_proposals 2 "--proposals: 3 is not a power of two" -- "$BIN" budget scenes/cornell.scene --proposals 3
 check budget_small 0 "(--device-mem)" -- "$BIN" budget scenes/cornell-water.scene --device-mem 64M
 check budget_too_small 1 "it would take 24.0 MiB of device memory" -- "$BIN" budget scenes/cornell-water.scene --device-mem 16M
+check proposals_ok 0 "x 4 proposals" -- "$BIN" render scenes/cornell.scene --width 8 --height 8 --spp 4 --threads 256 --proposals 4 --out "$DIR/k4.pfm"
+check proposals_pow2 2 "--proposals: 3 is not a power of two" -- "$BIN" render scenes/cornell.scene --proposals 3
+check proposals_multiple 2 "--threads 100 is not a multiple of --proposals 8" -- "$BIN" render scenes/cornell.scene --threads 100 --proposals 8 --out "$DIR/k8.png"
+absent proposals_multiple_no_file "$DIR/k8.png"
 check method_bad 2 "--method: 'bdpt' is not a method" -- "$BIN" render scenes/cornell.scene --method bdpt
 check large_step_range 2 "--large-step: '1.5' is not a probability" -- "$BIN" render scenes/cornell.scene --large-step 1.5
 check threads_zero 2 "--threads: 0 is out of range" -- "$BIN" render scenes/cornell.scene --threads 0

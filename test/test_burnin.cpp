@@ -171,7 +171,7 @@ TEST(BurnIn, RemovesMostOfTheStartupBias) {
     double err[2];
     for (int burn = 0; burn < 2; ++burn) {
         MltOptions opt;
-        opt.chains = 4096;
+        opt.threads = 4096;
         opt.seed = 3;
         opt.burn_in = burn == 1;
         opt.large_step = burn ? 0.1f : 0.5f;

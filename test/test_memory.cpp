@@ -14,18 +14,19 @@ namespace {
 
 struct Case {
     const char* scene;
-    std::uint32_t threads;
+    std::uint32_t threads, proposals;
     int depth;
 };
 
 // Device bytes a full MLT render (burn-in, steps, image) allocates at its peak.
-std::uint64_t mlt_peak(const DeviceScene& ds, std::uint32_t threads) {
+std::uint64_t mlt_peak(const DeviceScene& ds, std::uint32_t threads, std::uint32_t proposals = 1) {
     const ClContext& cl = test::cl();
     std::uint64_t before = cl.live_bytes();
     cl.reset_peak();
     {
         MltOptions opt;
-        opt.chains = threads;
+        opt.threads = threads;
+        opt.proposals = proposals;
         opt.burn_in_iters = 2;
         MltRenderer mlt(cl, ds, opt);
         mlt.prepare();
@@ -38,13 +39,20 @@ std::uint64_t mlt_peak(const DeviceScene& ds, std::uint32_t threads) {
 
 } // namespace
 
+// A renderer that kept a chain state per thread with K proposals per chain
+// would allocate more than the plan's N / K states.
 TEST(MemoryPlan, PredictsWhatMltRendersAllocate) {
-    for (Case c : {Case{"cornell-water", 1024, 24}, Case{"cornell", 4096, 3},
-                   Case{"cornell-glass", 700, 16}, Case{"ajar", 64, 1}}) {
+    for (Case c : {Case{"cornell-water", 1024, 1, 24}, Case{"cornell", 4096, 1, 3},
+                   Case{"cornell-glass", 704, 1, 16}, Case{"ajar", 64, 1, 1},
+                   Case{"cornell-water", 1024, 2, 24}, Case{"cornell", 4096, 4, 8},
+                   Case{"cornell-glass", 512, 8, 16}}) {
         DeviceScene ds = prepare_scene(test::scene(c.scene, 24, 16, c.depth));
-        MemoryPlan plan =
-            plan_mlt(ds, ChainShape{c.threads, 1, false}, scan_work_group(test::cl().device()));
-        EXPECT_EQ(mlt_peak(ds, c.threads), plan.total()) << c.scene << " N " << c.threads;
+        MemoryPlan plan = plan_mlt(ds, ChainShape{c.threads, c.proposals, false},
+                                   scan_work_group(test::cl().device()));
+        EXPECT_EQ(plan.bytes("values"),
+                  std::uint64_t(c.threads / c.proposals) * sizeof(ChainValue));
+        EXPECT_EQ(mlt_peak(ds, c.threads, c.proposals), plan.total())
+            << c.scene << " N " << c.threads << " K " << c.proposals;
     }
 }
 

@@ -49,11 +49,11 @@ std::uint32_t bits_of(const SampleLayout& l, std::uint32_t d) {
 void check_roundtrip(const SceneFeatures& f, bool float32) {
     DeviceScene ds = layout_only_scene(f, 4, 4);
     MltOptions opt;
-    opt.chains = 16;
+    opt.threads = 16;
     opt.float32_states = float32;
     opt.extra_files = {kProbeFile};
     MltRenderer mlt(test::cl(), ds, opt);
-    const std::uint32_t dims = ds.layout.vector_dims(), chains = opt.chains;
+    const std::uint32_t dims = ds.layout.vector_dims(), chains = opt.threads;
     std::vector<std::uint32_t> values(std::size_t(dims) * chains);
     std::mt19937 rng(3);
     for (std::uint32_t c = 0; c < chains; ++c)
@@ -97,27 +97,27 @@ TEST(MltPacking, StateSizeFollowsTheLayout) {
 TEST(MltLazy, LazyProposalEqualsEagerAndCommitStoresIt) {
     DeviceScene ds = prepare_scene(test::scene("cornell-water", 32, 32));
     MltOptions opt;
-    opt.chains = 1024;
+    opt.threads = 1024;
     opt.extra_files = {kProbeFile};
     MltRenderer mlt(test::cl(), ds, opt);
     mlt.prepare();
     ClBuffer eager(test::cl(), CL_MEM_READ_WRITE, mlt.state().bytes());
-    ClBuffer out(test::cl(), CL_MEM_WRITE_ONLY, std::size_t(opt.chains) * 3 * sizeof(cl_float4));
+    ClBuffer out(test::cl(), CL_MEM_WRITE_ONLY, std::size_t(opt.threads) * 3 * sizeof(cl_float4));
     SceneBuffers sb(test::cl(), ds);
     ClKernel k(mlt.program(), "probe_lazy_eager");
     k.set_args(sb.tris, sb.nodes, sb.mats, sb.lights, ds.frame, mlt.state(), mlt.values(), eager,
-               cl_uint(opt.chains), cl_ulong(99), out);
-    k.run(test::cl(), opt.chains);
-    std::vector<cl_float4> f(std::size_t(opt.chains) * 3);
+               cl_uint(opt.threads), cl_ulong(99), out);
+    k.run(test::cl(), opt.threads);
+    std::vector<cl_float4> f(std::size_t(opt.threads) * 3);
     out.read(test::cl(), f.data());
     int lit = 0;
-    for (std::uint32_t c = 0; c < opt.chains; ++c) {
+    for (std::uint32_t c = 0; c < opt.threads; ++c) {
         const cl_float4 &lazy = f[3 * c], &eager_f = f[3 * c + 1], &stored = f[3 * c + 2];
         EXPECT_EQ(std::memcmp(lazy.s, eager_f.s, 12), 0) << "chain " << c;
         EXPECT_EQ(std::memcmp(lazy.s, stored.s, 16), 0) << "chain " << c;
         lit += lazy.s[0] + lazy.s[1] + lazy.s[2] > 0;
     }
-    EXPECT_GT(lit, int(opt.chains) / 10) << "too few lit paths to test anything";
+    EXPECT_GT(lit, int(opt.threads) / 10) << "too few lit paths to test anything";
 }
 
 // f(x, y) = (1 + 3x)(1 + sin^2(2 pi y)), zero where x, y < 1/4 (cl/eval_target.cl):
@@ -141,12 +141,16 @@ double target_integral() {
 
 // The chains' states after many steps are independent draws from the target:
 // their histogram over 16 x 16 bins passes a chi-square test at significance
-// 0.001, and no chain sits where the target is zero.
-TEST(MltSampler, ChainStatesFollowAKnownTarget) {
+// 0.001, and no chain sits where the target is zero. With K proposals per
+// chain (split transitions) as without: 16,384 chains for K = 1, 2, 4.
+class MltSampler : public ::testing::TestWithParam<std::uint32_t> {};
+
+TEST_P(MltSampler, ChainStatesFollowAKnownTarget) {
     const int bins = 16;
     DeviceScene ds = layout_only_scene({}, bins, bins);
     MltOptions opt;
-    opt.chains = 16384;
+    opt.proposals = GetParam();
+    opt.threads = 16384 * opt.proposals;
     opt.large_step = 0.3f;
     opt.seed = 5;
     opt.evaluator = "cl/eval_target.cl";
@@ -155,11 +159,12 @@ TEST(MltSampler, ChainStatesFollowAKnownTarget) {
     MltRenderer mlt(test::cl(), ds, opt);
     mlt.prepare();
     mlt.step(300);
-    ClBuffer out(test::cl(), CL_MEM_WRITE_ONLY, opt.chains * sizeof(cl_uint));
+    const std::uint32_t chains = mlt.chains();
+    ClBuffer out(test::cl(), CL_MEM_WRITE_ONLY, chains * sizeof(cl_uint));
     ClKernel k(mlt.program(), "probe_chain_pixel");
-    k.set_args(ds.frame, mlt.state(), cl_uint(opt.chains), out);
-    k.run(test::cl(), opt.chains);
-    std::vector<cl_uint> pixel(opt.chains);
+    k.set_args(ds.frame, mlt.state(), cl_uint(chains), out);
+    k.run(test::cl(), chains);
+    std::vector<cl_uint> pixel(chains);
     out.read(test::cl(), pixel.data());
     std::vector<double> count(bins * bins, 0.0);
     for (cl_uint p : pixel)
@@ -175,12 +180,14 @@ TEST(MltSampler, ChainStatesFollowAKnownTarget) {
                 EXPECT_EQ(n, 0) << "a chain sits where the target is zero";
                 continue;
             }
-            double e = p * opt.chains;
+            double e = p * chains;
             chi2 += (n - e) * (n - e) / e;
             ++df;
         }
     EXPECT_LT(chi2, chi2_critical_001(df)) << "df " << df;
 }
+
+INSTANTIATE_TEST_SUITE_P(Proposals, MltSampler, ::testing::Values(1u, 2u, 4u));
 
 // The splatted image of the known target matches its bin means. Each of R
 // independent renders (own seed, own b) gives every bin a value; with the
@@ -189,13 +196,13 @@ TEST(MltSampler, ChainStatesFollowAKnownTarget) {
 // B bins has mean B (R-1)/(R-3) and variance B Var(t^2). T must stay below
 // its mean plus 3.3 standard deviations (about 0.001 one-sided), and bins
 // where the target is zero get exactly nothing.
-TEST(MltSampler, SplatImageMatchesTheTarget) {
+TEST(MltSplat, SplatImageMatchesTheTarget) {
     const int bins = 16, replicas = 16;
     DeviceScene ds = layout_only_scene({}, bins, bins);
     std::vector<double> sum(bins * bins, 0.0), sum2(bins * bins, 0.0);
     for (int r = 0; r < replicas; ++r) {
         MltOptions opt;
-        opt.chains = 1024;
+        opt.threads = 1024;
         opt.large_step = 0.3f;
         opt.seed = 100 + r;
         opt.burn_in_iters = 64; // b from 2^16 samples
@@ -246,18 +253,26 @@ Image reference(const DeviceScene& ds) {
 } // namespace
 
 // The MLT image mean is b times the fraction of mutations that splat, and b
-// is an OMC estimate of the film's mean. With 2^21 samples for b (0.36% and
-// 0.47% relative standard error on cornell and cornell-glass, reported by the
-// renderer) and the reference above (0.2-0.3%), the means must agree within
-// 1%, about two combined standard errors. The error against the reference
-// must fall as the chains run.
-class MltRender : public ::testing::TestWithParam<const char*> {};
+// is an OMC estimate of the film's mean. With 2^21 samples for b (relative
+// standard error 0.36% on cornell, 0.47% on cornell-glass, 0.64% on
+// cornell-water, as the renderer reports) and the reference above (0.2-0.4%),
+// the means must agree within 1%: 2.4, 1.8 and 1.3 combined standard errors
+// on these scenes, so the test catches a bias of a few percent, not less. The
+// error against the reference must fall as the chains run.
+struct RenderCase {
+    const char* scene;
+    std::uint32_t proposals;
+};
+
+class MltRender : public ::testing::TestWithParam<RenderCase> {};
 
 TEST_P(MltRender, MeanMatchesPathTracingAndErrorFalls) {
-    DeviceScene ds = prepare_scene(test::scene(GetParam(), 32, 32));
+    const char* name = GetParam().scene;
+    DeviceScene ds = prepare_scene(test::scene(name, 32, 32));
     Image ref = reference(ds);
     MltOptions opt;
-    opt.chains = 4096;
+    opt.threads = 4096;
+    opt.proposals = GetParam().proposals;
     opt.seed = 7;
     opt.burn_in_iters = 512; // b from 2^21 samples
     MltRenderer mlt(test::cl(), ds, opt);
@@ -268,16 +283,21 @@ TEST_P(MltRender, MeanMatchesPathTracingAndErrorFalls) {
         errors.push_back(image_mse(mlt.image(), ref));
     }
     double m = mlt.image().mean_luminance(), r = ref.mean_luminance();
-    std::printf("%s: b %.5f (+-%.2f%%), MLT mean %.5f, PT mean %.5f, MSE %.4g %.4g %.4g\n",
-                GetParam(), mlt.b(), 100 * mlt.b_rel_error(), m, r, errors[0], errors[1],
-                errors[2]);
+    std::printf("%s: b %.5f (+-%.2f%%), MLT mean %.5f, PT mean %.5f, MSE %.4g %.4g %.4g\n", name,
+                mlt.b(), 100 * mlt.b_rel_error(), m, r, errors[0], errors[1], errors[2]);
     EXPECT_NEAR(m, r, 0.01 * r);
-    EXPECT_LT(mlt.b_rel_error(), 0.005) << "b too noisy for a 1% comparison";
+    EXPECT_LT(mlt.b_rel_error(), 0.007) << "b noisier than this test was designed for";
     EXPECT_GT(errors[0], errors[1]);
     EXPECT_GT(errors[1], errors[2]);
 }
 
-INSTANTIATE_TEST_SUITE_P(Scenes, MltRender, ::testing::Values("cornell", "cornell-glass"));
+// K = 1 on cornell and cornell-glass; split transitions (K = 2, 4) on cornell
+// and cornell-water.
+INSTANTIATE_TEST_SUITE_P(Scenes, MltRender,
+                         ::testing::Values(RenderCase{"cornell", 1}, RenderCase{"cornell-glass", 1},
+                                           RenderCase{"cornell", 2}, RenderCase{"cornell", 4},
+                                           RenderCase{"cornell-water", 2},
+                                           RenderCase{"cornell-water", 4}));
 
 // Storage precision does not bias: renders with packed 24/16-bit states and
 // with unpacked float32 states (same kernel, PSS_FLOAT32) differ only by
@@ -293,7 +313,7 @@ TEST(MltPrecision, PackedAndFloat32StatesAgreeWithinNoise) {
     for (int build = 0; build < 2; ++build)
         for (int r = 0; r < replicas; ++r) {
             MltOptions opt;
-            opt.chains = 2048;
+            opt.threads = 2048;
             opt.seed = 300 + r + 50 * build;
             opt.burn_in_iters = 8;
             opt.float32_states = build == 1;
@@ -334,7 +354,7 @@ TEST(MltDeterminism, SameSeedSameImage) {
     std::vector<float> images[2];
     for (auto& img : images) {
         MltOptions opt;
-        opt.chains = 2048;
+        opt.threads = 2048;
         opt.seed = 77;
         opt.burn_in_iters = 8;
         MltRenderer mlt(test::cl(), ds, opt);
