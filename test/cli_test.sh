@@ -88,6 +88,10 @@ check proposals_ok 0 "x 4 proposals" -- "$BIN" render scenes/cornell.scene --wid
 check proposals_pow2 2 "--proposals: 3 is not a power of two" -- "$BIN" render scenes/cornell.scene --proposals 3
 check proposals_multiple 2 "--threads 100 is not a multiple of --proposals 8" -- "$BIN" render scenes/cornell.scene --threads 100 --proposals 8 --out "$DIR/k8.png"
 absent proposals_multiple_no_file "$DIR/k8.png"
+if "$BIN" devices | head -n 1 | grep -q "Portable Computing Language"; then
+    # PoCL shrinks the memory it reports; the budget must follow it.
+    check pocl_memory_limit 0 "device memory 1.0 GiB" -- env POCL_MEMORY_LIMIT=1 "$BIN" budget scenes/cornell.scene --depth 1
+fi
 check method_bad 2 "--method: 'bdpt' is not a method" -- "$BIN" render scenes/cornell.scene --method bdpt
 check large_step_range 2 "--large-step: '1.5' is not a probability" -- "$BIN" render scenes/cornell.scene --large-step 1.5
 check threads_zero 2 "--threads: 0 is out of range" -- "$BIN" render scenes/cornell.scene --threads 0
