@@ -70,8 +70,8 @@ std::uint32_t fit_to_device(const RenderOptions& o, const ClContext& cl, const D
     }
     ThreadChoice c = choose_threads(ds, shape, cl.device(), budget);
     if (!o.quiet)
-        std::printf("threads: %u (auto: %u halved to fit, reduction %ux); device memory %s of %s "
-                    "allowed\n",
+        std::printf("threads: %u (auto: %u keep the device busy, reduced %ux to fit); device "
+                    "memory %s of %s allowed\n",
                     c.threads, busy_threads(cl.device()), c.reduction,
                     format_bytes(c.plan.total()).c_str(), allowed.c_str());
     return c.threads;
