@@ -1,5 +1,7 @@
 #include "device_scene.hpp"
 
+#include "image.hpp"
+
 #include <cmath>
 
 namespace smallmlt {
@@ -12,8 +14,8 @@ void store3(f32 out[3], Vec3 v) {
     out[2] = v.z;
 }
 
-float luminance(const f32 c[3]) {
-    return 0.2126f * c[0] + 0.7152f * c[1] + 0.0722f * c[2];
+double luminance(const f32 c[3]) {
+    return rgb_luminance(c[0], c[1], c[2]);
 }
 
 // Light table: emitters picked in proportion to power (area x luminance of
@@ -75,7 +77,6 @@ DeviceScene prepare_scene(const Scene& scene) {
     DeviceScene ds;
     Bvh bvh = bvh_build(scene.triangles);
     ds.nodes = std::move(bvh.nodes);
-    ds.bvh_depth = bvh.depth;
     ds.materials = scene.materials;
     SceneFeatures features;
     features.depth = scene.depth;

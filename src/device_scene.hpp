@@ -17,7 +17,6 @@ struct DeviceScene {
     std::vector<LightEntry> lights;
     Frame frame{};
     SampleLayout layout{};
-    int bvh_depth = 0;
 };
 
 // Frame for a film of width x height pixels and the scene's camera.

@@ -7,12 +7,20 @@
 
 namespace smallmlt {
 
+// Luminance of linear RGB (Rec. 709 weights), as cl/path.cl's path_luminance.
+inline double rgb_luminance(double r, double g, double b) {
+    return 0.2126 * r + 0.7152 * g + 0.0722 * b;
+}
+
 struct Image {
     int width = 0, height = 0;
     std::vector<float> rgb; // row-major from the top row, 3 floats per pixel
 
     Image() = default;
     Image(int w, int h) : width(w), height(h), rgb(std::size_t(w) * h * 3, 0.0f) {}
+    double luminance(std::size_t pixel) const {
+        return rgb_luminance(rgb[3 * pixel], rgb[3 * pixel + 1], rgb[3 * pixel + 2]);
+    }
     double mean_luminance() const;
 };
 

@@ -61,7 +61,7 @@ bool write_exr(const Image& img, const std::string& path) {
 double Image::mean_luminance() const {
     double sum = 0;
     for (std::size_t i = 0; i + 2 < rgb.size(); i += 3)
-        sum += 0.2126 * rgb[i] + 0.7152 * rgb[i + 1] + 0.0722 * rgb[i + 2];
+        sum += rgb_luminance(rgb[i], rgb[i + 1], rgb[i + 2]);
     return rgb.empty() ? 0.0 : sum / double(rgb.size() / 3);
 }
 

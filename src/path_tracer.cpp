@@ -48,33 +48,14 @@ std::uint64_t PathTracer::rays() const {
     return sum;
 }
 
-std::vector<float> PathTracer::read_accum() const {
+Image PathTracer::image() const {
     std::vector<float> acc(pixels() * 4);
     accum_.read(cl_, acc.data());
-    return acc;
-}
-
-Image PathTracer::image() const {
-    std::vector<float> acc = read_accum();
     Image img(int(ds_.frame.width), int(ds_.frame.height));
     float inv = spp_ ? 1.0f / float(spp_) : 0.0f;
     for (std::size_t p = 0; p < pixels(); ++p)
         for (int c = 0; c < 3; ++c)
             img.rgb[3 * p + c] = acc[4 * p + c] * inv;
-    return img;
-}
-
-Image PathTracer::luminance_variance() const {
-    std::vector<float> acc = read_accum();
-    Image img(int(ds_.frame.width), int(ds_.frame.height));
-    if (spp_ < 2) return img;
-    double n = spp_;
-    for (std::size_t p = 0; p < pixels(); ++p) {
-        double mean = (0.2126 * acc[4 * p] + 0.7152 * acc[4 * p + 1] + 0.0722 * acc[4 * p + 2]) / n;
-        double var = (acc[4 * p + 3] / n - mean * mean) * n / (n - 1);
-        for (int c = 0; c < 3; ++c)
-            img.rgb[3 * p + c] = float(var > 0 ? var : 0);
-    }
     return img;
 }
 

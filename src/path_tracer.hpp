@@ -31,12 +31,9 @@ class PathTracer : public Integrator {
     std::uint64_t rays() const;
     std::uint64_t pixels() const { return std::uint64_t(ds_.frame.width) * ds_.frame.height; }
 
-    Image image() const;              // mean radiance per pixel
-    Image luminance_variance() const; // per-pixel sample variance of luminance (in all channels)
+    Image image() const; // mean radiance per pixel
 
   private:
-    std::vector<float> read_accum() const;
-
     const ClContext& cl_;
     const DeviceScene& ds_;
     std::uint64_t seed_;

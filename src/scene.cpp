@@ -43,7 +43,6 @@ void parse_camera(const std::vector<std::string>& t, const std::string& file, in
 
 Scene load_scene(const std::string& path) {
     Scene scene;
-    scene.path = path;
     bool seen_film = false, seen_camera = false, seen_depth = false;
     int meshes = 0;
     for_each_directive(path, "scene", [&](int line, const std::vector<std::string>& t) {

@@ -21,7 +21,6 @@ struct SceneTriangle {
 };
 
 struct Scene {
-    std::string path;
     int width = 512, height = 512;
     int depth = 8;
     Camera camera;

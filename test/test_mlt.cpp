@@ -325,10 +325,7 @@ TEST(MltPrecision, PackedAndFloat32StatesAgreeWithinNoise) {
             for (int y = 0; y < 32; ++y)
                 for (int x = 0; x < 32; ++x) {
                     std::size_t p = std::size_t(y) * 32 + x;
-                    q[(y / 16) * 2 + x / 16] +=
-                        (0.2126 * img.rgb[3 * p] + 0.7152 * img.rgb[3 * p + 1] +
-                         0.0722 * img.rgb[3 * p + 2]) /
-                        256.0 / mlt.b();
+                    q[(y / 16) * 2 + x / 16] += img.luminance(p) / 256.0 / mlt.b();
                 }
             for (int k = 0; k < 4; ++k) {
                 sum[build][k] += q[k];

@@ -8,14 +8,6 @@
 
 using namespace smallmlt;
 
-namespace {
-
-double pixel_luminance(const Image& img, std::size_t p) {
-    return 0.2126 * img.rgb[3 * p] + 0.7152 * img.rgb[3 * p + 1] + 0.0722 * img.rgb[3 * p + 2];
-}
-
-} // namespace
-
 // Every face has Kd 0.5 and Ke 1 and the box is closed, so the radiance of
 // every path prefix is known: L = sum_{i=0..depth} 0.5^i.
 class Furnace : public ::testing::TestWithParam<int> {};
@@ -61,7 +53,7 @@ TEST(Render, PixelVarianceFallsAsOneOverSpp) {
         std::size_t first = std::size_t(a.width) * (a.height / 2);
         std::size_t pixels = std::size_t(a.width) * a.height - first;
         for (std::size_t p = first; p < first + pixels; ++p) {
-            double d = pixel_luminance(a, p) - pixel_luminance(b, p);
+            double d = a.luminance(p) - b.luminance(p);
             sum += 0.5 * d * d;
         }
         log_n.push_back(std::log(double(n)));
