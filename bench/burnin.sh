@@ -46,15 +46,6 @@ set -- $SHOW
     done
     echo "unset multiplot"
 } | gnuplot
-{
-    echo "set terminal pngcairo size 640,420 font ',10'"
-    echo "set output '$OUT/error.png'"
-    echo "set datafile separator ','"
-    echo "set logscale xy; set grid"
-    echo "set xlabel 'wall time (s)'; set ylabel 'MSE against PT reference'"
-    echo "set title '$SCENE ${SIZE}x$SIZE'"
-    echo "plot '< grep ^none $csv' using 2:3 with linespoints title 'MLT, no burn-in, large step 0.5', \\"
-    echo "     '< grep ^omc $csv' using 2:3 with linespoints title 'MLT, OMC burn-in', \\"
-    echo "     '< grep ^pt $csv' using 2:3 with linespoints title 'PT'"
-} | gnuplot
+sh bench/plot_error.sh "$csv" "$OUT/error.png" "$SCENE ${SIZE}x$SIZE" \
+    "none=MLT, no burn-in, large step 0.5" "omc=MLT, OMC burn-in" "pt=PT"
 echo "wrote $OUT/figure1.png and $OUT/error.png"

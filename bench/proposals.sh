@@ -38,19 +38,7 @@ last=$(echo "$TIMES" | awk '{print $NF}')
     done
     echo "unset multiplot"
 } | gnuplot
-{
-    echo "set terminal pngcairo size 640,420 font ',10'"
-    echo "set output '$OUT/error.png'"
-    echo "set datafile separator ','"
-    echo "set logscale xy; set grid"
-    echo "set xlabel 'wall time (s)'; set ylabel 'MSE against PT reference'"
-    echo "set title 'split-transition MLT, $SCENE ${SIZE}x$SIZE'"
-    printf "plot "
-    sep=""
-    for k in $KS; do
-        printf "%s'< grep ^%s, %s' using 2:3 with linespoints title 'K = %s'" "$sep" "$k" "$csv" "$k"
-        sep=", "
-    done
-    echo
-} | gnuplot
+set --
+for k in $KS; do set -- "$@" "$k=K = $k"; done
+sh bench/plot_error.sh "$csv" "$OUT/error.png" "split-transition MLT, $SCENE ${SIZE}x$SIZE" "$@"
 echo "wrote $OUT/crops.png and $OUT/error.png"

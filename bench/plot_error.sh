@@ -1,0 +1,22 @@
+#!/bin/sh
+# Log-log chart of error against wall time from a CSV whose rows are
+# "series,seconds,mse,...": one line per series.
+# Usage: bench/plot_error.sh CSV OUT.png TITLE SERIES=LABEL...
+set -eu
+csv=$1 out=$2 title=$3
+shift 3
+{
+    echo "set terminal pngcairo size 640,420 font ',10'"
+    echo "set output '$out'"
+    echo "set datafile separator ','"
+    echo "set logscale xy; set grid"
+    echo "set xlabel 'wall time (s)'; set ylabel 'MSE against PT reference'"
+    echo "set title '$title'"
+    printf "plot "
+    sep=""
+    for pair in "$@"; do
+        printf "%s'< grep ^%s, %s' using 2:3 with linespoints title '%s'" "$sep" "${pair%%=*}" "$csv" "${pair#*=}"
+        sep=", "
+    done
+    echo
+} | gnuplot
