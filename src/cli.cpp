@@ -35,6 +35,11 @@ Render options:
   --depth D          maximum bounces, 0..64 (overrides the scene)
   --device INDEX     OpenCL device from `smallmlt devices` (default 0)
   --quiet            no progress bar and no summary line
+  --reference FILE   long render (.pfm or .exr, same film) to measure the error
+                     against: MSE and relative MSE as `compare`, printed at the end
+  --log FILE.csv     with --reference: a row every --log-every seconds of render
+                     time (default 1) with seconds, samples (or mutations) per
+                     pixel, samples, mse, rel_mse; measuring is not render time
 
   --device-mem BYTES use at most this much device memory, as if the device had
                      only BYTES (suffixes K, M, G); its largest buffer is BYTES/4
@@ -207,6 +212,16 @@ RenderOptions parse_render(ArgReader& r) {
             std::string f = r.value(flag, arg);
             image_format_of(f);
             o.outs.push_back(f);
+        } else if (flag == "--reference") {
+            o.reference = r.value(flag, arg);
+            ImageFormat f = image_format_of(o.reference, flag);
+            if (f == ImageFormat::Png)
+                throw UsageError("--reference " + o.reference +
+                                 ": a reference holds linear radiance (.pfm or .exr)");
+        } else if (flag == "--log") {
+            o.log = r.value(flag, arg);
+        } else if (flag == "--log-every") {
+            o.log_interval_s = to_seconds(flag, r.value(flag, arg));
         } else if (flag == "--width") {
             o.width = int(to_int(flag, r.value(flag, arg), 1, kMaxFilmSide));
         } else if (flag == "--height") {
@@ -225,6 +240,8 @@ RenderOptions parse_render(ArgReader& r) {
     if (o.spp && o.time_s) throw UsageError("--spp and --time: give one of them, not both");
     if (!o.spp && !o.time_s) o.spp = kDefaultSpp;
     if (o.outs.empty()) o.outs.push_back(default_out(o.scene));
+    if (!o.log.empty() && o.reference.empty())
+        throw UsageError("--log " + o.log + ": give --reference, the image to measure against");
     if (!o.large_step)
         o.large_step = o.burn_in ? kDefaultLargeStepBurnIn : kDefaultLargeStepNoBurnIn;
     return o;
@@ -270,6 +287,8 @@ Command parse_command_line(int argc, const char* const* argv) {
     Command c;
     if (r.done()) throw UsageError("no command given (see smallmlt --help)");
     std::string cmd = r.next();
+    for (int i = r.i; i < argc && (cmd == "render" || cmd == "budget"); ++i)
+        if (std::string(argv[i]) == "--help" || std::string(argv[i]) == "-h") return c;
     if (cmd == "--help" || cmd == "-h" || cmd == "help") {
         c.kind = CommandKind::Help;
     } else if (cmd == "--version") {
@@ -288,11 +307,6 @@ Command parse_command_line(int argc, const char* const* argv) {
         c.reference = r.next();
         if (!r.done()) throw UsageError("compare: unexpected argument '" + r.next() + "'");
     } else if (cmd == "render") {
-        for (int i = r.i; i < argc; ++i)
-            if (std::string(argv[i]) == "--help" || std::string(argv[i]) == "-h") {
-                c.kind = CommandKind::Help;
-                return c;
-            }
         c.kind = CommandKind::Render;
         c.render = parse_render(r);
     } else {

@@ -28,6 +28,9 @@ struct RenderOptions {
     std::optional<double> time_s;
     std::uint64_t seed = 1;
     std::vector<std::string> outs;
+    std::string reference;       // --reference: error measured against it
+    std::string log;             // --log: CSV of error against render time
+    double log_interval_s = 1.0; // --log-every
     std::optional<int> width, height, depth;
     int device = 0;
     bool quiet = false;

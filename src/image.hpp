@@ -26,8 +26,9 @@ struct Image {
 
 enum class ImageFormat { Png, Pfm, Exr };
 
-// Format from the file name's extension; throws UsageError for others.
-ImageFormat image_format_of(const std::string& path);
+// Format from the file name's extension; throws UsageError for others,
+// naming `flag` (if not empty) and the file.
+ImageFormat image_format_of(const std::string& path, const std::string& flag = "--out");
 
 void write_image(const Image& img, const std::string& path);
 

@@ -2,6 +2,7 @@
 // headers (system headers; their code is linked from the Debian libraries).
 #include "error.hpp"
 #include "image.hpp"
+#include "interrupt.hpp"
 
 #include <stb/stb_image_write.h>
 #include <tinyexr.h>
@@ -65,12 +66,13 @@ double Image::mean_luminance() const {
     return rgb.empty() ? 0.0 : sum / double(rgb.size() / 3);
 }
 
-ImageFormat image_format_of(const std::string& path) {
+ImageFormat image_format_of(const std::string& path, const std::string& flag) {
     std::string e = lower_ext(path);
     if (e == "png") return ImageFormat::Png;
     if (e == "pfm") return ImageFormat::Pfm;
     if (e == "exr") return ImageFormat::Exr;
-    throw UsageError("--out " + path + ": unknown image format (use .png, .pfm or .exr)");
+    throw UsageError((flag.empty() ? "" : flag + " ") + path +
+                     ": unknown image format (use .png, .pfm or .exr)");
 }
 
 void write_image(const Image& img, const std::string& path) {
@@ -80,6 +82,7 @@ void write_image(const Image& img, const std::string& path) {
     std::string dir = slash == std::string::npos ? "" : path.substr(0, slash + 1);
     std::string tmp = dir + ".tmp-" + std::to_string(getpid()) + "-" +
                       path.substr(slash == std::string::npos ? 0 : slash + 1);
+    TempFileGuard guard(tmp);
     bool ok = fmt == ImageFormat::Png   ? write_png(img, tmp)
               : fmt == ImageFormat::Pfm ? write_pfm(img, tmp)
                                         : write_exr(img, tmp);
@@ -129,7 +132,7 @@ Image read_exr(const std::string& path) {
 namespace smallmlt {
 
 Image read_image(const std::string& path) {
-    switch (image_format_of(path)) {
+    switch (image_format_of(path, "")) {
     case ImageFormat::Pfm:
         return read_pfm(path);
     case ImageFormat::Exr:

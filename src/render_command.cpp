@@ -1,11 +1,14 @@
 #include "render_command.hpp"
 
+#include "convergence_log.hpp"
 #include "error.hpp"
 #include "image_metrics.hpp"
+#include "interrupt.hpp"
 #include "memory_plan.hpp"
 #include "mlt.hpp"
 #include "path_tracer.hpp"
 #include "progress.hpp"
+#include "render_loop.hpp"
 #include "scene.hpp"
 
 #include <algorithm>
@@ -25,17 +28,17 @@ double seconds_since(Clock::time_point t0) {
 }
 
 // Fails early, before a long render, if an output could not be written.
-void check_output_dirs(const std::vector<std::string>& outs) {
+void check_output_dirs(const std::vector<std::string>& outs, const char* flag = "--out") {
     for (const std::string& f : outs) {
         std::size_t slash = f.find_last_of('/');
         std::string dir = slash == std::string::npos ? "." : f.substr(0, slash + 1);
         if (access(dir.c_str(), W_OK) != 0)
-            throw UsageError("--out " + f + ": directory " + dir +
+            throw UsageError(std::string(flag) + " " + f + ": directory " + dir +
                              " does not exist or is not writable");
     }
 }
 
-constexpr double kPassSeconds = 0.25; // target duration of one kernel launch
+constexpr double kPassSeconds = 0.25; // target duration of one pass
 
 } // namespace
 
@@ -94,58 +97,45 @@ std::unique_ptr<Integrator> make_integrator(const RenderOptions& o, const ClCont
 int run_render(const RenderOptions& o) {
     Clock::time_point t_setup = Clock::now();
     check_output_dirs(o.outs);
+    if (!o.log.empty()) check_output_dirs({o.log}, "--log");
     Scene scene = load_scene(o.scene);
     if (o.width) scene.width = *o.width;
     if (o.height) scene.height = *o.height;
     if (o.depth) scene.depth = *o.depth;
+    std::unique_ptr<ConvergenceLog> log;
+    if (!o.reference.empty())
+        log = std::make_unique<ConvergenceLog>(o.reference, o.log, o.log_interval_s, scene.width,
+                                               scene.height);
     DeviceScene ds = prepare_scene(scene);
     ClContext cl(o.device);
     std::unique_ptr<Integrator> method = make_integrator(o, cl, ds);
     double setup_s = seconds_since(t_setup);
 
+    InterruptGuard interrupts;
     Progress progress(!o.quiet);
-    Clock::time_point t0 = Clock::now();
-    method->prepare();
-    std::uint64_t target = o.spp ? method->units_for_spp(*o.spp) : 0, done = 0;
-    std::uint32_t batch = 1;
-    for (;;) {
-        double elapsed = seconds_since(t0);
-        std::uint64_t n = batch;
-        if (method->finished()) break;
-        if (o.spp) {
-            if (done >= target) break;
-            n = std::min(n, target - done);
-            progress.update(double(done) / double(target), std::to_string(int(method->spp_done())) +
-                                                               "/" + std::to_string(*o.spp) +
-                                                               " per pixel");
-        } else {
-            if (elapsed >= *o.time_s) break;
-            progress.update(elapsed / *o.time_s,
-                            std::to_string(int(method->spp_done())) + " per pixel");
-        }
-        Clock::time_point tp = Clock::now();
-        method->advance(std::uint32_t(n));
-        done += n;
-        double per_unit = std::max(seconds_since(tp), 1e-4) / double(n);
-        double next = kPassSeconds / per_unit;
-        if (o.time_s)
-            next = std::min(next, std::max(1.0, (*o.time_s - seconds_since(t0)) / per_unit));
-        batch = std::uint32_t(std::clamp(next, 1.0, 4096.0));
-    }
-    double render_s = seconds_since(t0);
-    progress.finish();
+    LoopLimits limits{o.spp, o.time_s, std::min(kPassSeconds, o.log_interval_s)};
+    LoopResult r = render_loop(*method, limits, log.get(), progress);
 
     Image img = method->image();
     for (const std::string& f : o.outs)
         write_image(img, f);
+    if (log) log->finish(r.render_s, method->spp_done(), img);
     if (!o.quiet) {
         std::printf("%s: %dx%d, depth %d, %s: %.2f s (+%.2f s setup), %s\n", o.scene.c_str(),
                     scene.width, scene.height, scene.depth, o.method == Method::Pt ? "pt" : "mlt",
-                    render_s, setup_s, method->summary(render_s).c_str());
+                    r.render_s, setup_s, method->summary(r.render_s).c_str());
+        if (log)
+            std::printf("error against %s: mse %.6g rel_mse %.6g\n", o.reference.c_str(),
+                        log->last().mse, log->last().rel_mse);
         for (const std::string& note : method->notes())
             std::printf("note: %s\n", note.c_str());
         if (scene.dropped_degenerate)
             std::printf("note: %d zero-area triangle(s) left out\n", scene.dropped_degenerate);
+    }
+    if (r.interrupted) {
+        std::fprintf(stderr, "smallmlt: interrupted after %.2f s; the image so far is written\n",
+                     r.render_s);
+        return kExitInterrupted;
     }
     return 0;
 }

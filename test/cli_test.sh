@@ -6,38 +6,7 @@ set -u
 BIN=$1
 DIR=build/test-scratch/cli
 rm -rf "$DIR" && mkdir -p "$DIR"
-pass=0
-fail=0
-
-# check NAME EXPECTED_EXIT EXPECTED_TEXT -- COMMAND...
-# An empty EXPECTED_TEXT means the command must print nothing at all.
-check() {
-    name=$1 want_rc=$2 want_text=$3
-    shift 4
-    out=$("$@" 2>&1)
-    rc=$?
-    if [ -z "$want_text" ]; then text_ok=$([ -z "$out" ] && echo 1); else
-        text_ok=$(printf '%s' "$out" | grep -qF -- "$want_text" && echo 1); fi
-    if [ "$rc" -eq "$want_rc" ] && [ -n "$text_ok" ]; then
-        pass=$((pass + 1))
-        echo "ok   $name"
-    else
-        fail=$((fail + 1))
-        echo "FAIL $name: exit $rc (want $want_rc), output:"
-        printf '%s\n' "$out" | sed 's/^/     /'
-    fi
-}
-
-# absent NAME FILE: the file must not exist
-absent() {
-    if [ -e "$2" ]; then
-        fail=$((fail + 1))
-        echo "FAIL $1: $2 exists"
-    else
-        pass=$((pass + 1))
-        echo "ok   $1"
-    fi
-}
+. test/checks.sh
 
 check help 0 "smallmlt render SCENE" -- "$BIN" --help
 check render_help 0 "--spp N" -- "$BIN" render --help
@@ -105,8 +74,5 @@ check compare_size 1 "image is 8x8, reference 4x4" -- "$BIN" compare "$DIR/ok.pf
 check compare_missing 1 "nope.pfm: cannot open image" -- "$BIN" compare "$DIR/ok.pfm" "$DIR/nope.pfm"
 check compare_args 2 "compare: give IMAGE and REFERENCE" -- "$BIN" compare "$DIR/ok.pfm"
 check compare_png 2 "only .pfm and .exr" -- "$BIN" compare "$DIR/ok.png" "$DIR/ok.pfm"
-leftover=$(ls -A "$DIR" | grep '^\.tmp-' || true)
-if [ -z "$leftover" ]; then pass=$((pass + 1)); echo "ok   no temporary files"; else fail=$((fail + 1)); echo "FAIL temporary files left: $leftover"; fi
-
-echo "cli: $pass passed, $fail failed"
-[ "$fail" -eq 0 ]
+no_temporaries "$DIR"
+summary cli

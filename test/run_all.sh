@@ -1,5 +1,5 @@
 #!/bin/sh
-# Runs every test: the GoogleTest binary and the command-line checks, then
+# Runs every test: the GoogleTest binary and the shell tests (test/*_test.sh), then
 # prints the combined count as "N passed, N failed".
 # Usage: run_all.sh TEST_BINARY  (with SMALLMLT_BIN naming the smallmlt binary)
 set -u
@@ -11,13 +11,20 @@ mkdir -p build/test-scratch
 gtest_rc=$?
 g_pass=$(sed -n 's/^\[  PASSED  \] \([0-9]*\) test.*/\1/p' "$LOG" | tail -n 1)
 g_fail=$(sed -n 's/^\[  FAILED  \] \([0-9]*\) test.*/\1/p' "$LOG" | tail -n 1)
-sh test/cli_test.sh "$BIN" | tee build/test-scratch/cli.log
-c_pass=$(sed -n 's/^cli: \([0-9]*\) passed.*/\1/p' build/test-scratch/cli.log)
-c_fail=$(sed -n 's/^cli: [0-9]* passed, \([0-9]*\) failed/\1/p' build/test-scratch/cli.log)
-passed=$(( ${g_pass:-0} + ${c_pass:-0} ))
-failed=$(( ${g_fail:-0} + ${c_fail:-0} ))
+s_pass=0
+s_fail=0
+for t in test/*_test.sh; do
+    name=$(basename "$t" _test.sh)
+    sh "$t" "$BIN" | tee "build/test-scratch/$name.log"
+    line=$(grep "^$name: [0-9]* passed, [0-9]* failed$" "build/test-scratch/$name.log")
+    # A script that stops before its summary counts as a failure.
+    if [ -z "$line" ]; then s_fail=$((s_fail + 1)); continue; fi
+    s_pass=$((s_pass + $(echo "$line" | awk '{print $2}')))
+    s_fail=$((s_fail + $(echo "$line" | awk '{print $4}')))
+done
+passed=$(( ${g_pass:-0} + s_pass ))
+failed=$(( ${g_fail:-0} + s_fail ))
 # A crashed test binary reports no counts: count it as a failure.
 if [ "$gtest_rc" -ne 0 ] && [ "${g_fail:-0}" -eq 0 ]; then failed=$((failed + 1)); fi
-if [ -z "$c_pass" ]; then failed=$((failed + 1)); fi
 echo "all: $passed passed, $failed failed"
 [ "$failed" -eq 0 ]
