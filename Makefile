@@ -23,7 +23,7 @@ TEST_OBJ   := $(TEST_SRC:test/%.cpp=$(BUILD)/obj/test/%.o)
 BIN        := $(BUILD)/smallmlt
 TEST_BIN   := $(BUILD)/smallmlt_tests
 
-.PHONY: all deps run test bench format clean
+.PHONY: all deps run test bench bench-quick format clean
 
 all: $(BIN)
 
@@ -72,8 +72,11 @@ test: deps
 
 bench: deps
 	$(MAKE) $(BIN)
-	sh bench/throughput.sh $(BIN)
-	sh bench/mlt_vs_pt.sh $(BIN) 5
+	sh bench/all.sh $(BIN)
+
+bench-quick: deps
+	$(MAKE) $(BIN)
+	QUICK=1 sh bench/all.sh $(BIN)
 
 format:
 	clang-format -i src/*.cpp src/*.hpp test/*.cpp test/*.hpp cl/*.cl cl/*.h

@@ -4,24 +4,25 @@
 # times; images at three of them side by side, and error (MSE against a long
 # PT reference, linear HDR) against time for all three in one log-log chart.
 # Writes bench/results/burnin/. Usage: bench/burnin.sh [BIN]
-# PLOT_ONLY=1 redraws the pictures from the last run's files.
+# THREADS sets MLT's thread count (default auto). PLOT_ONLY=1 redraws the pictures from the last run's files.
 set -eu
 BIN=${1:-build/smallmlt}
 SCENE=${SCENE:-cornell-water}
 SIZE=${SIZE:-128}
 TIMES=${TIMES:-1 2 4 8 16 32}
 SHOW=${SHOW:-8 16 32} # time points in the picture
-OUT=bench/results/burnin
+OUT=${RESULTS:-bench/results}/burnin
 mkdir -p "$OUT"
 ref=$(sh bench/reference.sh "$BIN" "$SCENE" "$SIZE")
 csv="$OUT/error.csv"
 common="scenes/$SCENE.scene --width $SIZE --height $SIZE --seed 7 --quiet"
+mlt="--method mlt ${THREADS:+--threads $THREADS}"
 [ -n "${PLOT_ONLY:-}" ] || echo "method,seconds,mse,rel_mse" > "$csv"
 [ -n "${PLOT_ONLY:-}" ] && TIMES=""
 for t in $TIMES; do
-    "$BIN" render $common --method mlt --burn-in none --large-step 0.5 --time "$t" \
+    "$BIN" render $common $mlt --burn-in none --large-step 0.5 --time "$t" \
         --out "$OUT/none-$t.pfm" --out "$OUT/none-$t.png"
-    "$BIN" render $common --method mlt --time "$t" --out "$OUT/omc-$t.pfm" --out "$OUT/omc-$t.png"
+    "$BIN" render $common $mlt --time "$t" --out "$OUT/omc-$t.pfm" --out "$OUT/omc-$t.png"
     "$BIN" render $common --method pt --time "$t" --out "$OUT/pt-$t.pfm" --out "$OUT/pt-$t.png"
     for m in none omc pt; do
         "$BIN" compare "$OUT/$m-$t.pfm" "$ref" |

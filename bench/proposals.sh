@@ -3,6 +3,7 @@
 # at equal time for K = 1, 2, 4 proposals per chain side by side, and error
 # (MSE against a long PT reference, linear HDR) against time for K = 1, 2,
 # 4, 8 in one chart. Same threads for every K (so N/K chains).
+# THREADS sets the thread count (default auto).
 # Writes bench/results/proposals/. Usage: bench/proposals.sh [BIN]
 set -eu
 BIN=${1:-build/smallmlt}
@@ -10,7 +11,7 @@ SCENE=${SCENE:-cornell-water}
 SIZE=${SIZE:-128}
 TIMES=${TIMES:-8 16 32}
 KS=${KS:-1 2 4 8}
-OUT=bench/results/proposals
+OUT=${RESULTS:-bench/results}/proposals
 mkdir -p "$OUT"
 ref=$(sh bench/reference.sh "$BIN" "$SCENE" "$SIZE")
 csv="$OUT/error.csv"
@@ -18,7 +19,7 @@ echo "proposals,seconds,mse,rel_mse" > "$csv"
 common="scenes/$SCENE.scene --width $SIZE --height $SIZE --seed 7 --quiet"
 for t in $TIMES; do
     for k in $KS; do
-        "$BIN" render $common --proposals "$k" --time "$t" --out "$OUT/k$k-$t.pfm" --out "$OUT/k$k-$t.png"
+        "$BIN" render $common ${THREADS:+--threads $THREADS} --proposals "$k" --time "$t" --out "$OUT/k$k-$t.pfm" --out "$OUT/k$k-$t.png"
         "$BIN" compare "$OUT/k$k-$t.pfm" "$ref" |
             awk -v k="$k" -v t="$t" '{print k "," t "," $2 "," $4}' >> "$csv"
     done

@@ -1,15 +1,17 @@
 #!/bin/sh
-# Prints the path of a long path-traced reference of SCENE at SIZE x SIZE,
-# rendering it first if bench/cache/ does not hold it. Its sample count is
-# recorded beside it (.txt). References are not in git.
+# Prints the path of a long path-traced reference of SCENE at SIZE x SIZE
+# rendered for SECONDS (default 300, or REF_SECONDS), rendering it first if
+# the cache (bench/cache/, or CACHE) does not hold it. Its render summary,
+# with the sample count, is kept beside it (.txt). References are not in git.
 # Usage: bench/reference.sh BIN SCENE SIZE [SECONDS]
 set -eu
 BIN=$1 SCENE=$2 SIZE=$3 SECONDS_=${4:-${REF_SECONDS:-300}}
-mkdir -p bench/cache
-ref="bench/cache/$SCENE-${SIZE}x$SIZE.pfm"
-if [ ! -s "$ref" ]; then
-    echo "rendering reference $ref (path tracing, $SECONDS_ s)" >&2
+CACHE=${CACHE:-bench/cache}
+mkdir -p "$CACHE"
+base="$CACHE/$SCENE-${SIZE}x$SIZE-${SECONDS_}s"
+if [ ! -s "$base.pfm" ]; then
+    echo "rendering reference $base.pfm (path tracing, $SECONDS_ s)" >&2
     "$BIN" render "scenes/$SCENE.scene" --method pt --width "$SIZE" --height "$SIZE" \
-        --time "$SECONDS_" --seed 987654321 --out "$ref" > "bench/cache/$SCENE-${SIZE}x$SIZE.txt"
+        --time "$SECONDS_" --seed 987654321 --out "$base.pfm" > "$base.txt"
 fi
-echo "$ref"
+echo "$base.pfm"

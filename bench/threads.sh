@@ -1,7 +1,7 @@
 #!/bin/sh
 # Throughput against thread count, the analogue of the paper's Figure 2: MLT
 # mutations per second (steps only) on cornell-water for N = 2^8 up to the
-# automatic count, same work (mutations per pixel) at every N; median of RUNS.
+# automatic count (or MAX_THREADS), same work (mutations per pixel) at every N; median of RUNS.
 # Writes bench/results/threads/threads.csv and threads.png.
 # Usage: bench/threads.sh [BIN] [RUNS]
 set -eu
@@ -10,14 +10,16 @@ RUNS=${2:-3}
 SCENE=${SCENE:-cornell-water}
 SIZE=${SIZE:-128}
 SPP=${SPP:-64}
-OUT=bench/results/threads
+OUT=${RESULTS:-bench/results}/threads
 mkdir -p "$OUT"
 median() { sort -g | awk '{v[NR] = $1} END {print (NR % 2) ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2}'; }
 auto=$("$BIN" render "scenes/$SCENE.scene" --width 8 --height 8 --spp 1 --out "$OUT/probe.png" |
     sed -n 's/^threads: \([0-9]*\) (auto.*/\1/p')
 echo "threads,mutations_per_s" > "$OUT/threads.csv"
 n=256
-while [ "$n" -le "$auto" ]; do
+max=${MAX_THREADS:-$auto}
+[ "$max" -le "$auto" ] || max=$auto
+while [ "$n" -le "$max" ]; do
     : > "$OUT/log"
     i=0
     while [ "$i" -lt "$RUNS" ]; do

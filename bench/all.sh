@@ -1,0 +1,58 @@
+#!/bin/sh
+# The benchmark suite (`make bench`): error against time for every method
+# (bench/error_time.sh), throughput against thread count (threads.sh),
+# memory against depth (memory.sh), the burn-in and split-transition image
+# strips (burnin.sh, proposals.sh), and throughput (throughput.sh,
+# mlt_vs_pt.sh). Writes bench/results/ (or RESULTS); with PUBLISH=1 copies
+# the charts to doc/img/. About 45 minutes on 2 cores.
+# QUICK=1 (`make bench-quick`) runs every part at toy sizes and times, in
+# under 2 minutes, to check that the suite works, not to measure.
+# Usage: bench/all.sh [BIN]
+set -eu
+BIN=${1:-build/smallmlt}
+RESULTS=${RESULTS:-bench/results}
+export RESULTS
+mkdir -p "$RESULTS"
+t0=$(date +%s)
+step() { echo "== $* ($(($(date +%s) - t0)) s)"; }
+
+if [ -n "${QUICK:-}" ]; then
+    export REF_SECONDS=${REF_SECONDS:-4} THREADS=${THREADS:-1024}
+    step error against time
+    SIZE=32 SECONDS=1.5 SEEDS=1 LOG_EVERY=0.25 sh bench/error_time.sh "$BIN"
+    step throughput against threads
+    SIZE=32 SPP=4 MAX_THREADS=2048 sh bench/threads.sh "$BIN" 1
+    step memory against depth
+    sh bench/memory.sh "$BIN"
+    step burn-in strip
+    SIZE=32 TIMES="0.5 1" SHOW="0.5 1" sh bench/burnin.sh "$BIN"
+    step split-transition strip
+    SIZE=32 TIMES="0.5 1" KS="1 2 4" sh bench/proposals.sh "$BIN"
+else
+    step error against time
+    sh bench/error_time.sh "$BIN"
+    step throughput against threads
+    sh bench/threads.sh "$BIN"
+    step memory against depth
+    sh bench/memory.sh "$BIN"
+    step burn-in strip
+    sh bench/burnin.sh "$BIN"
+    step split-transition strip
+    sh bench/proposals.sh "$BIN"
+    step throughput
+    sh bench/throughput.sh "$BIN" 5
+    sh bench/mlt_vs_pt.sh "$BIN" 5
+fi
+step done
+if [ -n "${PUBLISH:-}" ]; then
+    for f in "$RESULTS"/error_time/*.png; do
+        case $f in *-s[0-9]*.png) ;; *) cp "$f" "doc/img/error-$(basename "$f")" ;; esac
+    done
+    cp "$RESULTS/threads/threads.png" doc/img/threads.png
+    cp "$RESULTS/memory/memory.png" doc/img/memory.png
+    cp "$RESULTS/burnin/figure1.png" doc/img/burnin-figure1.png
+    cp "$RESULTS/burnin/error.png" doc/img/burnin-error.png
+    cp "$RESULTS/proposals/crops.png" doc/img/proposals-crops.png
+    cp "$RESULTS/proposals/error.png" doc/img/proposals-error.png
+    echo "copied the charts to doc/img/"
+fi

@@ -1,0 +1,60 @@
+#!/bin/sh
+# Error against time for every method on the scenes where they differ: one
+# render per (scene, method, seed) with a convergence log (render --log;
+# MSE on linear RGB against a long PT reference, measuring not counted as
+# render time). Charts one seed's curves per scene (log-log) and prints, for
+# each method, the time it needs to reach PT's final error, as a ratio of
+# PT's time (medians over the seeds; bench/time_to_error.awk).
+# Writes bench/results/error_time/. Usage: bench/error_time.sh [BIN]
+# Settings (environment): SCENES, SIZE, SECONDS, SEEDS, LOG_EVERY, THREADS.
+set -eu
+BIN=${1:-build/smallmlt}
+SCENES=${SCENES:-cornell-water cornell-glass ajar}
+SIZE=${SIZE:-128}
+SECONDS_=${SECONDS:-30}
+SEEDS=${SEEDS:-1 2 3}
+LOG_EVERY=${LOG_EVERY:-0.5}
+THREADS=${THREADS:-auto}
+OUT=${RESULTS:-bench/results}/error_time
+mkdir -p "$OUT"
+
+# method name and its flags
+flags() {
+    case $1 in
+    pt) echo "--method pt" ;;
+    mlt-none) echo "--method mlt --burn-in none --large-step 0.5 --threads $THREADS" ;;
+    mlt) echo "--method mlt --threads $THREADS" ;;
+    mlt-k2) echo "--method mlt --proposals 2 --threads $THREADS" ;;
+    mlt-k4) echo "--method mlt --proposals 4 --threads $THREADS" ;;
+    esac
+}
+METHODS="pt mlt-none mlt mlt-k2 mlt-k4"
+
+echo "device: $("$BIN" devices | sed -n '1p'), cores: $(nproc)" | tee "$OUT/machine.txt"
+echo "scene,method,ratio_to_pt,seconds,pt_seconds,target_mse,reached" > "$OUT/time_to_error.csv"
+for scene in $SCENES; do
+    ref=$(sh bench/reference.sh "$BIN" "$scene" "$SIZE")
+    csv="$OUT/$scene.csv"
+    echo "method,seed,seconds,samples_per_pixel,samples,mse,rel_mse" > "$csv"
+    for seed in $SEEDS; do
+        for m in $METHODS; do
+            # shellcheck disable=SC2046
+            "$BIN" render "scenes/$scene.scene" $(flags "$m") --width "$SIZE" --height "$SIZE" \
+                --time "$SECONDS_" --seed "$seed" --quiet --reference "$ref" \
+                --log "$OUT/log.csv" --log-every "$LOG_EVERY" --out "$OUT/$scene-$m-s$seed.png"
+            tail -n +2 "$OUT/log.csv" | sed "s/^/$m,$seed,/" >> "$csv"
+        done
+    done
+    rm -f "$OUT/log.csv"
+    first=$(echo "$SEEDS" | awk '{print $1}')
+    awk -F, -v s="$first" 'NR == 1 || $2 == s' "$csv" | cut -d, -f1,3- > "$OUT/$scene-seed$first.csv"
+    sh bench/plot_error.sh "$OUT/$scene-seed$first.csv" "$OUT/$scene.png" \
+        "$scene ${SIZE}x$SIZE, seed $first (reference: PT, $(sed -n 's/.* \([0-9]* spp\).*/\1/p' "${ref%.pfm}.txt"))" \
+        "pt=PT" "mlt-none=MLT, no burn-in, large step 0.5" "mlt=MLT, OMC burn-in (default)" \
+        "mlt-k2=split-transition K = 2" "mlt-k4=split-transition K = 4"
+    awk -F, -v scene="$scene" -f bench/time_to_error.awk "$csv" >> "$OUT/time_to_error.csv"
+done
+echo
+echo "time to reach the error every PT render reached at $SECONDS_ s, ${SIZE}x$SIZE, medians over seeds ($SEEDS);"
+echo "ratio < 1: faster than PT; * = not reached, extrapolated as MSE ~ 1/t from the last row"
+column -s, -t "$OUT/time_to_error.csv"
