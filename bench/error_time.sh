@@ -6,7 +6,8 @@
 # each method, the time it needs to reach PT's final error, as a ratio of
 # PT's time (medians over the seeds; bench/time_to_error.awk).
 # Writes bench/results/error_time/. Usage: bench/error_time.sh [BIN]
-# Settings (environment): SCENES, SIZE, SECONDS, SEEDS, LOG_EVERY, THREADS.
+# Settings (environment): SCENES, SIZE, SECONDS, SEEDS, LOG_EVERY, THREADS;
+# PLOT_ONLY=1 redraws the charts and the table from the last run's CSVs.
 set -eu
 BIN=${1:-build/smallmlt}
 SCENES=${SCENES:-cornell-water cornell-glass ajar}
@@ -35,8 +36,10 @@ echo "scene,method,ratio_to_pt,seconds,pt_seconds,target_mse,reached" > "$OUT/ti
 for scene in $SCENES; do
     ref=$(sh bench/reference.sh "$BIN" "$scene" "$SIZE")
     csv="$OUT/$scene.csv"
-    echo "method,seed,seconds,samples_per_pixel,samples,mse,rel_mse" > "$csv"
-    for seed in $SEEDS; do
+    [ -n "${PLOT_ONLY:-}" ] || echo "method,seed,seconds,samples_per_pixel,samples,mse,rel_mse" > "$csv"
+    run_seeds=$SEEDS
+    [ -z "${PLOT_ONLY:-}" ] || run_seeds=""
+    for seed in $run_seeds; do
         for m in $METHODS; do
             # shellcheck disable=SC2046
             "$BIN" render "scenes/$scene.scene" $(flags "$m") --width "$SIZE" --height "$SIZE" \
@@ -47,7 +50,7 @@ for scene in $SCENES; do
     done
     rm -f "$OUT/log.csv"
     first=$(echo "$SEEDS" | awk '{print $1}')
-    awk -F, -v s="$first" 'NR == 1 || $2 == s' "$csv" | cut -d, -f1,3- > "$OUT/$scene-seed$first.csv"
+    awk -F, -v s="$first" 'NR == 1 || $2 == s' "$csv" | cut -d, -f1,3,6 > "$OUT/$scene-seed$first.csv"
     sh bench/plot_error.sh "$OUT/$scene-seed$first.csv" "$OUT/$scene.png" \
         "$scene ${SIZE}x$SIZE, seed $first (reference: PT, $(sed -n 's/.* \([0-9]* spp\).*/\1/p' "${ref%.pfm}.txt"))" \
         "pt=PT" "mlt-none=MLT, no burn-in, large step 0.5" "mlt=MLT, OMC burn-in (default)" \

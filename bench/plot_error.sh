@@ -9,7 +9,7 @@ shift 3
     echo "set terminal pngcairo size 640,420 font ',10'"
     echo "set output '$out'"
     echo "set datafile separator ','"
-    echo "set logscale xy; set grid"
+    echo "set logscale xy; set grid; set key bottom left"
     echo "set xlabel 'wall time (s)'; set ylabel 'MSE against PT reference'"
     echo "set title '$title'"
     printf "plot "

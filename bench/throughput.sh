@@ -16,11 +16,11 @@ echo "device: $("$BIN" devices | sed -n '1p')"
 echo "cores: $(nproc)   renders per scene: $RUNS (after one warm-up), 256x256, $SPP spp"
 printf '%-16s %14s %14s %16s\n' scene "M paths/s" "M rays/s" "M rays/s/core"
 for scene in cornell cornell-water; do
-    "$BIN" render "scenes/$scene.scene" --width 256 --height 256 --spp "$SPP" --out "$TMP/w.png" >/dev/null
+    "$BIN" render "scenes/$scene.scene" --method pt --width 256 --height 256 --spp "$SPP" --out "$TMP/w.png" >/dev/null
     : > "$TMP/log"
     i=0
     while [ "$i" -lt "$RUNS" ]; do
-        "$BIN" render "scenes/$scene.scene" --width 256 --height 256 --spp "$SPP" --out "$TMP/r.png" >> "$TMP/log"
+        "$BIN" render "scenes/$scene.scene" --method pt --width 256 --height 256 --spp "$SPP" --out "$TMP/r.png" >> "$TMP/log"
         i=$((i + 1))
     done
     paths=$(sed -n 's/.*, \([0-9.]*\) M paths\/s.*/\1/p' "$TMP/log" | median)
