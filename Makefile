@@ -15,6 +15,12 @@ endif
 DEB_PACKAGES := g++ make pocl-opencl-icd ocl-icd-opencl-dev opencl-headers libstb-dev gnuplot-nox \
                 libtinyobjloader-dev libtinyexr-dev libgtest-dev
 
+# `make fuzz` only: libFuzzer comes with clang's runtime libraries.
+FUZZ_PACKAGES := clang libclang-rt-dev
+FUZZ_SECONDS  ?= 60
+FUZZ_SRC      := $(addprefix src/,scene.cpp obj_loader.cpp mtl_loader.cpp text_parse.cpp \
+                   bvh.cpp device_scene.cpp sample_layout.cpp)
+
 CL_FILES   := $(sort $(wildcard cl/*.h cl/*.cl))
 LIB_SRC    := $(filter-out src/main.cpp,$(wildcard src/*.cpp))
 LIB_OBJ    := $(LIB_SRC:src/%.cpp=$(BUILD)/obj/%.o) $(BUILD)/obj/kernel_sources.o
@@ -23,12 +29,13 @@ TEST_OBJ   := $(TEST_SRC:test/%.cpp=$(BUILD)/obj/test/%.o)
 BIN        := $(BUILD)/smallmlt
 TEST_BIN   := $(BUILD)/smallmlt_tests
 
-.PHONY: all deps run test bench bench-quick format clean
+.PHONY: all deps deps-fuzz run test bench bench-quick fuzz format clean
 
 all: $(BIN)
 
-deps:
-	@missing=$$(for p in $(DEB_PACKAGES); do \
+deps deps-fuzz: PACKAGES = $(if $(filter deps-fuzz,$@),$(FUZZ_PACKAGES),$(DEB_PACKAGES))
+deps deps-fuzz:
+	@missing=$$(for p in $(PACKAGES); do \
 	    dpkg-query -W -f='$${Status}\n' $$p 2>/dev/null | grep -q '^install ok installed' || echo $$p; \
 	  done); \
 	if [ -n "$$missing" ]; then \
@@ -77,6 +84,18 @@ bench: deps
 bench-quick: deps
 	$(MAKE) $(BIN)
 	QUICK=1 sh bench/all.sh $(BIN)
+
+# Fuzzes the scene, OBJ and MTL loaders for FUZZ_SECONDS (default 60) from
+# the seed corpus in test/fuzz/corpus; findings are written as crash-* files.
+build/fuzz/fuzz_scene: test/fuzz/fuzz_scene.cpp $(FUZZ_SRC)
+	@mkdir -p $(dir $@)
+	clang++ -std=c++17 -O1 -g -fsanitize=fuzzer,address,undefined -Isrc -Icl $^ -o $@ -ltinyobjloader
+
+fuzz: deps deps-fuzz
+	$(MAKE) build/fuzz/fuzz_scene
+	@mkdir -p build/fuzz/corpus
+	cp test/fuzz/corpus/* build/fuzz/corpus/
+	cd build/fuzz && ./fuzz_scene -max_total_time=$(FUZZ_SECONDS) -max_len=65536 -print_final_stats=1 corpus
 
 format:
 	clang-format -i src/*.cpp src/*.hpp test/*.cpp test/*.hpp cl/*.cl cl/*.h

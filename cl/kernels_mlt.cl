@@ -6,14 +6,10 @@
 
 #pragma OPENCL EXTENSION cl_khr_int64_base_atomics : enable
 
-inline bool mlt_finite(float3 f) {
-    return isfinite(f.x) && isfinite(f.y) && isfinite(f.z);
-}
-
 /* A non-finite F is dropped and counted: it contributes nothing and a chain
  * never moves to it. */
 inline MltSample mlt_checked(MltSample s, __global ulong* stats) {
-    if (!mlt_finite(s.f)) {
+    if (!path_finite(s.f)) {
         atom_inc(&stats[MLT_STAT_NONFINITE]);
         s.f = (float3)(0.0f);
     }

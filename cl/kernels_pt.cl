@@ -1,7 +1,8 @@
 /* Entry point of the path tracer (ordinary Monte Carlo). One work-item per
  * pixel; sample s of pixel p uses the stream rng_key(seed, p, s), so an image
  * depends only on the seed and the sample count, not on how samples are split
- * into passes. accum holds per pixel (sum R, sum G, sum B, unused). */
+ * into passes. accum holds per pixel (sum R, sum G, sum B, number of
+ * non-finite samples dropped). */
 
 __kernel void pt_render(__global const Triangle* tris, __global const BvhNode* nodes,
                         __global const Material* mats, __global const LightEntry* lights,
@@ -18,7 +19,7 @@ __kernel void pt_render(__global const Triangle* tris, __global const BvhNode* n
         float fx = (px + smp_uniform(&src, 0u, layout_film(0u))) / (float)frame.width;
         float fy = (py + smp_uniform(&src, 0u, layout_film(1u))) / (float)frame.height;
         PathResult r = path_trace(&sc, &src, camera_ray(&frame, fx, fy));
-        acc += (float4)(r.radiance, 0.0f);
+        acc += path_finite(r.radiance) ? (float4)(r.radiance, 0.0f) : (float4)(0.0f, 0.0f, 0.0f, 1.0f);
         rays += r.rays;
     }
     accum[pixel] = acc;

@@ -149,6 +149,12 @@ inline float path_luminance(float3 c) {
     return 0.2126f * c.x + 0.7152f * c.y + 0.0722f * c.z;
 }
 
+/* False for a radiance with a NaN or infinite channel: such a sample is
+ * dropped and counted by every method, never added to the image. */
+inline bool path_finite(float3 c) {
+    return isfinite(c.x) && isfinite(c.y) && isfinite(c.z);
+}
+
 inline SceneView path_scene(const __global Triangle* tris, const __global BvhNode* nodes,
                             const __global Material* mats, const __global LightEntry* lights,
                             const Frame* frame) {

@@ -28,6 +28,7 @@ ConvergenceLog::ConvergenceLog(const std::string& reference_path, const std::str
     log_ = std::fopen(tmp_path_.c_str(), "w");
     if (!log_) throw InputError("--log " + log_path_ + ": " + std::strerror(errno));
     std::fputs("seconds,samples_per_pixel,samples,mse,rel_mse\n", log_);
+    std::fflush(log_);
 }
 
 ConvergenceLog::~ConvergenceLog() {

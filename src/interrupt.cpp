@@ -20,6 +20,10 @@ struct sigaction g_old_int, g_old_term;
 void on_signal(int sig) {
     if (!g_requested) {
         g_requested = 1;
+        static const char msg[] =
+            "\nsmallmlt: stopping after the current pass (signal again to quit at once)\n";
+        ssize_t rc = write(STDERR_FILENO, msg, sizeof msg - 1);
+        (void)rc;
         return;
     }
     for (int i = 0; i < kSlots; ++i)

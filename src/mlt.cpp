@@ -40,14 +40,18 @@ const MltOptions& check_proposals(const MltOptions& opt) {
 }
 
 const DeviceScene& require_atomics(const ClContext& cl, const DeviceScene& ds) {
-    if (!cl.device().int64_atomics)
-        throw InputError("device " + cl.device().name +
-                         " lacks cl_khr_int64_base_atomics, which MLT splatting needs; "
-                         "use --method pt on it");
+    mlt_require_device(cl.device());
     return ds;
 }
 
 } // namespace
+
+void mlt_require_device(const DeviceInfo& d) {
+    if (!d.int64_atomics)
+        throw InputError("device " + d.name +
+                         " lacks cl_khr_int64_base_atomics, which MLT splatting needs; "
+                         "use --method pt on it");
+}
 
 std::vector<std::string> mlt_program_files(const MltOptions& opt) {
     std::vector<std::string> files = {
@@ -174,6 +178,10 @@ MltStats MltRenderer::stats() const {
 
 std::vector<std::string> MltRenderer::notes() const {
     std::vector<std::string> out;
+    if (std::uint64_t n = stats().nonfinite)
+        out.push_back(
+            std::to_string(n) +
+            " samples had a NaN or infinite radiance and were dropped (counted as black)");
     if (prepared_ && b_ == 0)
         out.push_back("no OMC sample of " +
                       std::to_string(std::uint64_t(opt_.threads) * opt_.burn_in_iters) +

@@ -32,6 +32,10 @@ struct MltOptions {
     std::vector<std::string> extra_files; // appended to the program (test probes)
 };
 
+// Throws InputError naming the device if it lacks what MLT needs (64-bit
+// atomics for the splats); path tracing needs none of it.
+void mlt_require_device(const DeviceInfo& d);
+
 // Kernel files of the MLT program, in build order.
 std::vector<std::string> mlt_program_files(const MltOptions& opt);
 

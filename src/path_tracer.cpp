@@ -32,11 +32,27 @@ void PathTracer::add_samples(std::uint32_t n) {
 }
 
 std::string PathTracer::summary(double seconds) const {
-    char buf[160];
-    std::snprintf(buf, sizeof buf, "%u spp, %.3f M paths/s, %.3f M rays/s", spp_,
-                  double(spp_) * double(pixels()) / seconds * 1e-6,
-                  double(rays()) / seconds * 1e-6);
+    char buf[200];
+    std::snprintf(buf, sizeof buf, "%u spp, %.3f M paths/s, %.3f M rays/s, %llu non-finite dropped",
+                  spp_, double(spp_) * double(pixels()) / seconds * 1e-6,
+                  double(rays()) / seconds * 1e-6, static_cast<unsigned long long>(nonfinite()));
     return buf;
+}
+
+std::uint64_t PathTracer::nonfinite() const {
+    std::vector<float> acc(pixels() * 4);
+    accum_.read(cl_, acc.data());
+    std::uint64_t n = 0;
+    for (std::size_t p = 0; p < pixels(); ++p)
+        n += std::uint64_t(acc[4 * p + 3]);
+    return n;
+}
+
+std::vector<std::string> PathTracer::notes() const {
+    std::uint64_t n = nonfinite();
+    if (n == 0) return {};
+    return {std::to_string(n) + " of " + std::to_string(std::uint64_t(spp_) * pixels()) +
+            " samples had a NaN or infinite radiance and were dropped (counted as black)"};
 }
 
 std::uint64_t PathTracer::rays() const {

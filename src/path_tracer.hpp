@@ -29,6 +29,9 @@ class PathTracer : public Integrator {
     void add_samples(std::uint32_t n);
     std::uint32_t spp() const { return spp_; }
     std::uint64_t rays() const;
+    // Samples dropped because their radiance was NaN or infinite.
+    std::uint64_t nonfinite() const;
+    std::vector<std::string> notes() const override;
     std::uint64_t pixels() const { return std::uint64_t(ds_.frame.width) * ds_.frame.height; }
 
     Image image() const; // mean radiance per pixel

@@ -95,6 +95,7 @@ std::unique_ptr<Integrator> make_integrator(const RenderOptions& o, const ClCont
 }
 
 int run_render(const RenderOptions& o) {
+    InterruptGuard interrupts; // from here on, a signal stops the render cleanly
     Clock::time_point t_setup = Clock::now();
     check_output_dirs(o.outs);
     if (!o.log.empty()) check_output_dirs({o.log}, "--log");
@@ -111,7 +112,6 @@ int run_render(const RenderOptions& o) {
     std::unique_ptr<Integrator> method = make_integrator(o, cl, ds);
     double setup_s = seconds_since(t_setup);
 
-    InterruptGuard interrupts;
     Progress progress(!o.quiet);
     LoopLimits limits{o.spp, o.time_s, std::min(kPassSeconds, o.log_interval_s)};
     LoopResult r = render_loop(*method, limits, log.get(), progress);

@@ -85,6 +85,12 @@ Scene load_scene(const std::string& path) {
     if (!seen_camera) throw InputError(path + ": no 'camera' line");
     if (meshes == 0) throw InputError(path + ": no 'mesh' line");
     if (scene.triangles.empty()) throw InputError(path + ": the scene has no triangles");
+    bool lit = false;
+    for (const SceneTriangle& t : scene.triangles)
+        lit = lit || scene.materials[t.material].emissive;
+    if (!lit)
+        throw InputError(path + ": no emissive triangle (no material with Ke > 0 is used on a "
+                                "triangle of non-zero area): nothing would be lit");
     return scene;
 }
 

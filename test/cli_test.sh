@@ -12,6 +12,10 @@ check help 0 "smallmlt render SCENE" -- "$BIN" --help
 check render_help 0 "--spp N" -- "$BIN" render --help
 check version 0 "smallmlt " -- "$BIN" --version
 check devices 0 "global memory" -- "$BIN" devices
+mkdir -p "$DIR/no-vendors"
+check no_platform 1 "no OpenCL platform found" -- env OCL_ICD_VENDORS="$DIR/no-vendors" "$BIN" devices
+check no_platform_render 1 "no OpenCL platform found" -- env OCL_ICD_VENDORS="$DIR/no-vendors" "$BIN" render scenes/cornell.scene --out "$DIR/np.png"
+absent no_platform_no_file "$DIR/np.png"
 check no_command 2 "no command given" -- "$BIN"
 check unknown_command 2 "unknown command 'draw'" -- "$BIN" draw
 check unknown_flag 2 "unknown option --fast" -- "$BIN" render scenes/cornell.scene --fast
@@ -38,10 +42,19 @@ check render_mlt 0 "mlt: " -- "$BIN" render scenes/cornell.scene --width 8 --hei
 check mlt_default 0 "mlt: " -- "$BIN" render scenes/cornell.scene --width 8 --height 8 --spp 1 --threads 64 --out "$DIR/default.png"
 check burn_in_bad 2 "--burn-in: 'mcmc' is not a burn-in" -- "$BIN" render scenes/cornell.scene --burn-in mcmc
 check burn_in_iters_zero 2 "--burn-in-iters: 0 is out of range" -- "$BIN" render scenes/cornell.scene --burn-in-iters 0
-printf 'newmtl grey\nKd 0.5 0.5 0.5\n' > "$DIR/dark.mtl"
-printf 'mtllib dark.mtl\nv -1 0 -1\nv 1 0 -1\nv 0 2 -1\nusemtl grey\nf 1 2 3\n' > "$DIR/dark.obj"
+# A lamp above a grey triangle, emitting upwards into nothing: the scene is
+# lit in principle and black in fact; and the same without the lamp.
+printf 'newmtl grey\nKd 0.5 0.5 0.5\nnewmtl lamp\nKe 5 5 5\n' > "$DIR/dark.mtl"
+printf 'mtllib dark.mtl\nv -1 0 -1\nv 1 0 -1\nv 0 2 -1\nv -1 5 -1\nv 1 5 -1\nv 0 5 1\nusemtl grey\nf 1 2 3\nusemtl lamp\nf 4 6 5\n' > "$DIR/dark.obj"
 printf 'camera 0 1 3  0 1 0  0 1 0  40\nmesh dark.obj\n' > "$DIR/dark.scene"
 check black_scene 0 "carried light (b = 0): the image is black" -- "$BIN" render "$DIR/dark.scene" --width 8 --height 8 --threads 64 --out "$DIR/dark.pfm"
+check black_scene_is_black 0 "mse 0 rel_mse 0 mean 0 reference_mean 0" -- "$BIN" compare "$DIR/dark.pfm" "$DIR/dark.pfm"
+grep -v lamp "$DIR/dark.obj" > "$DIR/unlit.obj"
+sed 's/dark.obj/unlit.obj/' "$DIR/dark.scene" > "$DIR/unlit.scene"
+check no_light 1 "unlit.scene: no emissive triangle" -- "$BIN" render "$DIR/unlit.scene" --out "$DIR/unlit.png"
+absent no_light_no_file "$DIR/unlit.png"
+check film_enormous 1 "not enough device memory" -- "$BIN" render scenes/cornell.scene --width 16384 --height 16384 --out "$DIR/huge.png"
+absent film_enormous_no_file "$DIR/huge.png"
 check device_mem_tiny 1 "not enough device memory" -- "$BIN" render scenes/cornell-water.scene --device-mem 64K --out "$DIR/tiny.png"
 absent device_mem_tiny_no_file "$DIR/tiny.png"
 check threads_too_many 2 "threads fit (or use --threads auto)" -- "$BIN" render scenes/cornell-water.scene --threads 4000000 --device-mem 64M --out "$DIR/many.png"

@@ -10,7 +10,8 @@ using namespace smallmlt;
 namespace {
 
 const char* kScene = "film 8 8\ncamera 0 1 3  0 1 0  0 1 0  40\ndepth 4\nmesh m.obj\n";
-const char* kObj = "mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl white\nf 1 2 3\n";
+const char* kObj = "mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nusemtl white\nf 1 2 3\n"
+                   "usemtl lamp\nf 1 2 4\n";
 const char* kMtl = "newmtl white\nKd 0.5 0.5 0.5\nnewmtl lamp\nKe 1 1 1\n";
 
 struct Files {
@@ -41,6 +42,24 @@ struct Case {
 };
 
 const Case kCases[] = {
+    {"empty_scene", "scene", "", "s.scene: no 'camera' line"},
+    {"film_negative", "scene", "film -8 8\n", "s.scene:1: film size must be 1..16384"},
+    {"film_truncated", "scene", "film 8 8\ncamera 0 1 3  0 1", "s.scene:2: 'camera' takes"},
+    {"depth_text", "scene", "depth many\n", "s.scene:1: depth: 'many' is not an integer"},
+    {"no_light", "obj", "mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl white\nf 1 2 3\n",
+     "s.scene: no emissive triangle"},
+    {"emitter_zero_area", "obj",
+     "mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nv 2 0 0\nusemtl white\nf 1 2 3\n"
+     "usemtl lamp\nf 1 2 4\n",
+     "s.scene: no emissive triangle"},
+    {"all_degenerate", "obj", "mtllib m.mtl\nv 0 0 0\nv 1 0 0\nusemtl lamp\nf 1 2 2\n",
+     "s.scene: the scene has no triangles"},
+    {"obj_empty", "obj", "", "s.scene: the scene has no triangles"},
+    {"obj_truncated_vertex", "obj", "mtllib m.mtl\nv 0 0", "m.obj:2: 'v' takes 3 coordinates"},
+    {"obj_inf_vertex", "obj", "v 0 inf 0\n", "m.obj:1: vertex coordinate: 'inf' is not finite"},
+    {"obj_huge_vertex", "obj", "v 0 1e39 0\n", "m.obj:1: vertex coordinate: '1e39' is not finite"},
+    {"mtl_nan", "mtl", "newmtl white\nKd nan 0 0\n", "m.mtl:2: Kd: 'nan' is not finite"},
+    {"mtl_truncated", "mtl", "newmtl white\nKd 0.5", "m.mtl:2: 'Kd' takes"},
     {"unknown_directive", "scene", "film 8 8\nlens 2\n", "s.scene:2: unknown directive 'lens'"},
     {"film_arity", "scene", "film 8\n", "s.scene:1: 'film' takes 2 value(s)"},
     {"film_zero", "scene", "film 0 8\n", "s.scene:1: film size must be 1..16384"},
@@ -116,3 +135,13 @@ TEST_P(SceneErrors, GiveTheirOwnMessage) {
 
 INSTANTIATE_TEST_SUITE_P(All, SceneErrors, ::testing::ValuesIn(kCases),
                          [](const auto& info) { return std::string(info.param.name); });
+
+TEST(SceneParse, ZeroAreaTrianglesAreLeftOutAndCounted) {
+    std::string dir = test::scratch_dir("parse-degenerate");
+    test::write_file(dir + "/s.scene", kScene);
+    test::write_file(dir + "/m.obj", std::string(kObj) + "usemtl white\nf 1 2 2\nf 1 1 1\n");
+    test::write_file(dir + "/m.mtl", kMtl);
+    Scene s = load_scene(dir + "/s.scene");
+    EXPECT_EQ(s.triangles.size(), 2u);
+    EXPECT_EQ(s.dropped_degenerate, 2);
+}

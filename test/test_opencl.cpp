@@ -1,0 +1,57 @@
+// OpenCL trouble that can be provoked on any device: a kernel that does not
+// build reports its log with the real file names, a launch the device
+// refuses names the kernel and its sizes, and a device without the 64-bit
+// atomics MLT needs is refused with a way out. (No platform at all is
+// checked from the command line: test/cli_test.sh, no_platform.)
+#include "error.hpp"
+#include "mlt.hpp"
+#include "test_support.hpp"
+
+#include <gtest/gtest.h>
+
+#include <functional>
+
+using namespace smallmlt;
+
+namespace {
+
+std::string error_of(const std::function<void()>& f) {
+    try {
+        f();
+    } catch (const InputError& e) {
+        return e.what();
+    }
+    return "";
+}
+
+} // namespace
+
+TEST(OpenCl, BuildFailurePrintsTheLogWithFileAndLine) {
+    // A define that breaks the shared header: the log must point into it.
+    std::string msg = error_of([] {
+        test::cl().build({"cl/shared_types.h", "cl/rng.cl"}, "#define u32 @\n");
+    });
+    EXPECT_NE(msg.find("kernel build failed (CL_BUILD_PROGRAM_FAILURE)"), std::string::npos) << msg;
+    EXPECT_NE(msg.find("cl/shared_types.h:"), std::string::npos) << msg;
+}
+
+TEST(OpenCl, RefusedLaunchNamesKernelAndSizes) {
+    ClProgram program(test::cl().build(
+        {"cl/shared_types.h", "cl/geometry.cl", "cl/bvh.cl", "cl/kernels_probe.cl"}, ""));
+    ClKernel k(program.p, "probe_layout");
+    std::size_t too_big = test::cl().device().max_work_group * 2;
+    std::string msg = error_of([&] { k.enqueue(test::cl(), too_big, too_big); });
+    EXPECT_NE(msg.find("kernel probe_layout over " + std::to_string(too_big) + " work-items"),
+              std::string::npos)
+        << msg;
+    EXPECT_NE(msg.find("CL_INVALID_WORK_GROUP_SIZE"), std::string::npos) << msg;
+}
+
+TEST(OpenCl, MltRefusesDeviceWithoutInt64Atomics) {
+    DeviceInfo d = test::cl().device();
+    EXPECT_EQ(error_of([&] { mlt_require_device(d); }), "");
+    d.int64_atomics = false;
+    std::string msg = error_of([&] { mlt_require_device(d); });
+    EXPECT_NE(msg.find("lacks cl_khr_int64_base_atomics"), std::string::npos) << msg;
+    EXPECT_NE(msg.find("use --method pt"), std::string::npos) << msg;
+}
