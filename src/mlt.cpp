@@ -186,7 +186,16 @@ std::vector<std::string> MltRenderer::notes() const {
         out.push_back("no OMC sample of " +
                       std::to_string(std::uint64_t(opt_.threads) * opt_.burn_in_iters) +
                       " carried light (b = 0): the image is black; is the scene lit?");
-    else if (prepared_ && iterations_ == 0)
+    else if (prepared_ && b_rel_error_ > kMaxBRelError) {
+        char buf[240];
+        std::snprintf(buf, sizeof buf,
+                      "few OMC samples carried light: b = %.5g has a relative standard error "
+                      "of %.2f%% (above %.0f%%), and the whole image scales with it; more "
+                      "--burn-in-iters or --threads narrow it",
+                      b_, 100.0 * b_rel_error_, 100.0 * kMaxBRelError);
+        out.push_back(buf);
+    }
+    if (prepared_ && b_ > 0 && iterations_ == 0)
         out.push_back("no MLT step ran in the time given: burn-in took " +
                       std::to_string(prepare_seconds_) +
                       " s; give more time or fewer --burn-in-iters");

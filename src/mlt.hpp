@@ -42,6 +42,10 @@ std::vector<std::string> mlt_program_files(const MltOptions& opt);
 // Words of 32 bits that one chain's state takes for this layout.
 std::uint32_t mlt_words_per_chain(const SampleLayout& layout, bool float32_states);
 
+// Above this relative standard error of b, a render says so (b scales the
+// whole image; its error is not reduced by running the chains longer).
+constexpr double kMaxBRelError = 0.01;
+
 struct MltStats {
     std::uint64_t mutations = 0, accepted = 0, large = 0, nonfinite = 0, rays = 0;
 };

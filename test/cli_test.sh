@@ -73,6 +73,9 @@ absent proposals_multiple_no_file "$DIR/k8.png"
 if "$BIN" devices | head -n 1 | grep -q "Portable Computing Language"; then
     # PoCL shrinks the memory it reports; the budget must follow it.
     check pocl_memory_limit 0 "device memory 1.0 GiB" -- env POCL_MEMORY_LIMIT=1 "$BIN" budget scenes/cornell.scene --depth 1
+    # A platform without devices.
+    check no_device 1 "no OpenCL device found on any platform" -- env POCL_DEVICES=none "$BIN" render scenes/cornell.scene --out "$DIR/nd.png"
+    absent no_device_no_file "$DIR/nd.png"
 fi
 check method_bad 2 "--method: 'bdpt' is not a method" -- "$BIN" render scenes/cornell.scene --method bdpt
 check large_step_range 2 "--large-step: '1.5' is not a probability" -- "$BIN" render scenes/cornell.scene --large-step 1.5

@@ -99,3 +99,30 @@ TEST(Numeric, BoxedInLightRendersBlack) {
     EXPECT_EQ(nonfinite_pixels(m), 0u);
     EXPECT_EQ(m.mean_luminance(), 0.0);
 }
+
+// ajar: light reaches the room through a slit, so few OMC samples carry it
+// and b is uncertain at small burn-in sizes. The render says so, and its
+// mean (which b sets) still tracks PT's within b's stated error: at most 4
+// standard errors of b plus 2% for the PT reference's own noise and MLT's.
+TEST(Numeric, UncertainBIsReportedAndTheMeanStillTracksPt) {
+    DeviceScene ds = prepare_scene(test::scene("ajar", 32, 32));
+    double pt_mean = test::render_pt(ds, 11, 1024).mean_luminance();
+    for (std::uint32_t iters : {4u, 16u, 64u}) {
+        MltOptions opt;
+        opt.threads = 1024;
+        opt.burn_in_iters = iters;
+        opt.large_step = 0.1f;
+        opt.seed = 21 + iters;
+        MltRenderer mlt(test::cl(), ds, opt);
+        mlt.prepare();
+        mlt.step(64);
+        double mean = mlt.image().mean_luminance();
+        SCOPED_TRACE("burn-in iterations " + std::to_string(iters) + ", b " +
+                     std::to_string(mlt.b()) + " +- " + std::to_string(100 * mlt.b_rel_error()) +
+                     "%, PT " + std::to_string(pt_mean));
+        EXPECT_GT(mlt.b_rel_error(), kMaxBRelError);
+        ASSERT_FALSE(mlt.notes().empty());
+        EXPECT_NE(mlt.notes()[0].find("few OMC samples carried light"), std::string::npos);
+        EXPECT_LT(std::abs(mean - pt_mean) / pt_mean, 4 * mlt.b_rel_error() + 0.02);
+    }
+}
