@@ -38,8 +38,6 @@ void check_output_dirs(const std::vector<std::string>& outs, const char* flag = 
     }
 }
 
-constexpr double kPassSeconds = 0.25; // target duration of one pass
-
 } // namespace
 
 // Thread count for MLT (auto or checked) such that the render fits the

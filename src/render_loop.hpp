@@ -13,10 +13,12 @@
 
 namespace smallmlt {
 
+constexpr double kPassSeconds = 0.25; // target duration of one pass
+
 struct LoopLimits {
     std::optional<std::uint32_t> spp; // samples or mutations per pixel
     std::optional<double> time_s;     // or render seconds
-    double pass_s = 0.25;             // target duration of one pass
+    double pass_s = kPassSeconds;
 };
 
 struct LoopResult {
