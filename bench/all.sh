@@ -2,9 +2,9 @@
 # The benchmark suite (`make bench`): error against time for every method
 # (bench/error_time.sh), throughput against thread count (threads.sh),
 # memory against depth (memory.sh), the burn-in and split-transition image
-# strips (burnin.sh, proposals.sh), and throughput (throughput.sh,
-# mlt_vs_pt.sh). Writes bench/results/ (or RESULTS); with PUBLISH=1 copies
-# the charts to doc/img/. About 45 minutes on 2 cores.
+# strips (burnin.sh, proposals.sh), stuck chains (stuck.sh), and throughput
+# (throughput.sh, mlt_vs_pt.sh). Writes bench/results/ (or RESULTS); with
+# PUBLISH=1 copies the charts to doc/img/. About an hour on 2 cores.
 # QUICK=1 (`make bench-quick`) runs every part at toy sizes and times, in
 # under 2 minutes, to check that the suite works, not to measure.
 # Usage: bench/all.sh [BIN]
@@ -28,6 +28,8 @@ if [ -n "${QUICK:-}" ]; then
     SIZE=32 TIMES="0.5 1" SHOW="0.5 1" sh bench/burnin.sh "$BIN"
     step split-transition strip
     SIZE=32 TIMES="0.5 1" KS="1 2 4" sh bench/proposals.sh "$BIN"
+    step stuck chains
+    SIZE=32 SECONDS=1.5 SEEDS=1 LARGE_STEPS="0.1 0.5" LOG_EVERY=0.25 sh bench/stuck.sh "$BIN"
 else
     step error against time
     sh bench/error_time.sh "$BIN"
@@ -39,6 +41,8 @@ else
     sh bench/burnin.sh "$BIN"
     step split-transition strip
     sh bench/proposals.sh "$BIN"
+    step stuck chains
+    sh bench/stuck.sh "$BIN"
     step throughput
     sh bench/throughput.sh "$BIN" 5
     sh bench/mlt_vs_pt.sh "$BIN" 5
@@ -54,5 +58,6 @@ if [ -n "${PUBLISH:-}" ]; then
     cp "$RESULTS/burnin/error.png" doc/img/burnin-error.png
     cp "$RESULTS/proposals/crops.png" doc/img/proposals-crops.png
     cp "$RESULTS/proposals/error.png" doc/img/proposals-error.png
+    cp "$RESULTS/stuck/error.png" doc/img/stuck-error.png
     echo "copied the charts to doc/img/"
 fi

@@ -2,7 +2,7 @@
 # Split-transition MLT, the paper's Figures 3 and 4 on cornell-water: crops
 # at equal time for K = 1, 2, 4 proposals per chain side by side, and error
 # (MSE against a long PT reference, linear HDR) against time for K = 1, 2,
-# 4, 8 in one chart. Same threads for every K (so N/K chains).
+# 4, 8, 16 in one chart. Same threads for every K (so N/K chains).
 # THREADS sets the thread count (default auto).
 # Writes bench/results/proposals/. Usage: bench/proposals.sh [BIN]
 set -eu
@@ -10,7 +10,7 @@ BIN=${1:-build/smallmlt}
 SCENE=${SCENE:-cornell-water}
 SIZE=${SIZE:-128}
 TIMES=${TIMES:-8 16 32}
-KS=${KS:-1 2 4 8}
+KS=${KS:-1 2 4 8 16}
 OUT=${RESULTS:-bench/results}/proposals
 mkdir -p "$OUT"
 ref=$(sh bench/reference.sh "$BIN" "$SCENE" "$SIZE")

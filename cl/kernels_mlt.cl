@@ -16,6 +16,35 @@ inline MltSample mlt_checked(MltSample s, __global ulong* stats) {
     return s;
 }
 
+inline uint chain_bounces(ChainValue v) {
+    return v.meta & CHAIN_BOUNCES_MASK;
+}
+
+inline uint chain_run(ChainValue v) {
+    return v.meta >> CHAIN_RUN_SHIFT;
+}
+
+/* The value of a chain that moved to a path with F = f and `bounces` live
+ * bounces: its run of rejections starts again, its stuck mark stays. */
+inline ChainValue chain_moved(ChainValue x, float3 f, uint bounces) {
+    ChainValue v = {{f.x, f.y, f.z}, bounces | (x.meta & CHAIN_STUCK_BIT)};
+    return v;
+}
+
+/* Chain x stays where it is: its run of rejections grows by one; reaching
+ * stuck_run marks and counts it, once. */
+inline void mlt_rejected(__global ChainValue* value, ChainValue x, uint stuck_run,
+                         __global ulong* stats, __local uint* longest) {
+    uint run = min(chain_run(x) + 1u, CHAIN_RUN_MAX);
+    uint meta = (x.meta & (CHAIN_BOUNCES_MASK | CHAIN_STUCK_BIT)) | (run << CHAIN_RUN_SHIFT);
+    if (run >= stuck_run && !(x.meta & CHAIN_STUCK_BIT)) {
+        meta |= CHAIN_STUCK_BIT;
+        atom_inc(&stats[MLT_STAT_STUCK]);
+    }
+    value->meta = meta;
+    atomic_max(longest, run);
+}
+
 /* Adds w * f / lum(f) to a pixel in fixed point (SPLAT_FRAC_BITS). */
 inline void mlt_splat(__global ulong* splat, uint pixel, float3 f, float w) {
     float lum = path_luminance(f);
@@ -67,15 +96,21 @@ __kernel void mlt_init(__global const Triangle* tris, __global const BvhNode* no
  * and picks the next state among (x, y_1..y_K) in proportion to (K - sum a_i,
  * a_1, .., a_K); the picked work-item commits its proposal. K = 1 is plain
  * PSSMLT with expected-value splats. A proposal is large when its stream's
- * number MLT_DIM_LARGE is below large_threshold (= P * 2^32). */
+ * number MLT_DIM_LARGE is below large_threshold (= P * 2^32).
+ *
+ * Stuck chains: the first work-item keeps the chain's run of consecutive
+ * rejections in its ChainValue; a chain whose run reaches stuck_run is marked
+ * and counted once (MLT_STAT_STUCK), and longest_run[0] is the longest run
+ * any chain has reached (one atomic per work-group and step). */
 __kernel void mlt_step(__global const Triangle* tris, __global const BvhNode* nodes,
                        __global const Material* mats, __global const LightEntry* lights,
                        const Frame frame, __global uint* state, __global ChainValue* values,
                        const uint num_threads, const uint proposals, const ulong seed,
                        const uint iteration, const uint large_threshold, __global ulong* splat,
-                       __global ulong* stats) {
+                       __global ulong* stats, const uint stuck_run, __global uint* longest_run) {
     __local float l_a[MLT_GROUP];
     __local uint l_next[MLT_GROUP];
+    __local uint l_longest;
     uint t = get_global_id(0), lid = get_local_id(0);
     uint chains = num_threads / proposals, c = t / proposals, i = t % proposals;
     uint first = lid - i; /* the chain's first work-item in this group */
@@ -87,7 +122,8 @@ __kernel void mlt_step(__global const Triangle* tris, __global const BvhNode* no
     ulong key = rng_key(seed, t, iteration);
     bool large = rng_u32(key, MLT_DIM_LARGE) < large_threshold;
     SampleSource src =
-        smp_chain(state, active ? c : 0u, chains, key, large ? SMP_LARGE : SMP_SMALL, x.bounces);
+        smp_chain(state, active ? c : 0u, chains, key, large ? SMP_LARGE : SMP_SMALL,
+                                  chain_bounces(x));
     MltSample y;
     y.rays = 0u;
     float a = 0.0f;
@@ -98,6 +134,7 @@ __kernel void mlt_step(__global const Triangle* tris, __global const BvhNode* no
         mlt_splat(splat, y.pixel, y.f, a);
     }
     l_a[lid] = a;
+    if (lid == 0u) l_longest = 0u;
     barrier(CLK_LOCAL_MEM_FENCE);
     if (active && i == 0u) {
         float stay = (float)proposals;
@@ -116,13 +153,14 @@ __kernel void mlt_step(__global const Triangle* tris, __global const BvhNode* no
             acc += l_a[first + j];
         }
         l_next[lid] = next;
+        if (next == 0u) mlt_rejected(&values[c], x, stuck_run, stats, &l_longest);
     }
     barrier(CLK_LOCAL_MEM_FENCE);
+    if (lid == 0u && l_longest > 0u) atomic_max(longest_run, l_longest);
     if (!active) return;
     if (l_next[first] == i + 1u) {
         mlt_commit(&src, y.bounces);
-        ChainValue v = {{y.f.x, y.f.y, y.f.z}, y.bounces};
-        values[c] = v;
+        values[c] = chain_moved(x, y.f, y.bounces);
         atom_inc(&stats[MLT_STAT_ACCEPTED]);
     }
     if (large) atom_inc(&stats[MLT_STAT_LARGE]);

@@ -34,7 +34,7 @@ __kernel void probe_layout(__global uint* out) {
     out[i++] = PROBE_OFFSET(Frame, dv);
     out[i++] = PROBE_OFFSET(Frame, num_lights);
     out[i++] = sizeof(ChainValue);
-    out[i++] = PROBE_OFFSET(ChainValue, bounces);
+    out[i++] = PROBE_OFFSET(ChainValue, meta);
 }
 
 /* Closest hit of each ray (origin xyz, tmax in o; direction in d):

@@ -82,13 +82,22 @@ typedef struct {
 } Frame;
 
 /* A chain's value beside its packed numbers: F(x), the RGB contribution of
- * the path of its current state x, and how many bounces of x's numbers are
- * live (the path scattered that many times; numbers of later bounces are
- * dead and drawn afresh when a proposal reaches them). 16 bytes. */
+ * the path of its current state x, and in `meta`:
+ * - bits 0-7: how many bounces of x's numbers are live (the path scattered
+ *   that many times; numbers of later bounces are dead and drawn afresh when
+ *   a proposal reaches them);
+ * - bit 8: the chain has been stuck (a run of stuck_run rejections);
+ * - bits 9-31: its current run of consecutive rejections (saturating).
+ * 16 bytes. */
 typedef struct {
     f32 rgb[3];
-    u32 bounces;
+    u32 meta;
 } ChainValue;
+
+#define CHAIN_BOUNCES_MASK 0xFFu
+#define CHAIN_STUCK_BIT 0x100u
+#define CHAIN_RUN_SHIFT 9
+#define CHAIN_RUN_MAX 0x7FFFFFu
 
 /* Splats are accumulated as 64-bit fixed-point integers with this many
  * fraction bits, so sums are exact and do not depend on the order in which
@@ -100,6 +109,7 @@ typedef struct {
 #define MLT_STAT_LARGE 1
 #define MLT_STAT_NONFINITE 2
 #define MLT_STAT_RAYS 3
-#define MLT_STAT_COUNT 4
+#define MLT_STAT_STUCK 4 /* chains that have been stuck */
+#define MLT_STAT_COUNT 5
 
 #endif

@@ -217,6 +217,26 @@ def cornell_glass():
                 "cornell-glass: a glass sphere (index 1.5) and its caustic")
 
 
+def tiny_caustic():
+    m = Mesh()
+    cornell_walls(m)
+    m.quad("light", (0, 1.999, 0), (0, 0, 0.25), (0.25, 0, 0), (0, -1, 0))
+    # A ball lens (focal length 1.5 r from its centre) images a 1 cm light
+    # 0.45 above its centre onto the floor 0.45 below it: 2/0.45 = 1/0.225.
+    # The light is seen from the floor below only through the glass, so only
+    # paths that scatter off the floor and happen to reach it carry the
+    # caustic: rare, and hundreds of times brighter than the floor around it.
+    m.sphere("glass", (0.3, 0.45, 0.1), 0.15, subdivisions=4)
+    m.quad("spark", (0.3, 0.9, 0.1), (0, 0, 0.005), (0.005, 0, 0), (0, -1, 0))
+    m.rotated_block("white", (-0.45, 0, -0.4), (0.25, 0.25), 0.9, 20)
+    mats = CORNELL_MATERIALS + ("newmtl light\nKd 0.78 0.78 0.78\nKe 17 12 4\n"
+                                "newmtl spark\nKd 0 0 0\nKe 20000 20000 20000\n"
+                                "newmtl glass\nillum 7\nNi 1.5\n")
+    write_scene("tiny-caustic", m, mats, (512, 512), CAMERA_FRONT, 8,
+                "tiny-caustic: a 1 cm light focused by a glass ball into a tiny, very bright "
+                "caustic on the floor: chains that find it get stuck")
+
+
 def furnace():
     m = Mesh()
     m.box("wall", (-1, -1, -1), (1, 1, 1), inward=True)
@@ -246,5 +266,6 @@ if __name__ == "__main__":
     cornell()
     cornell_water()
     cornell_glass()
+    tiny_caustic()
     furnace()
     ajar()

@@ -77,6 +77,7 @@ MemoryPlan plan_mlt(const DeviceScene& ds, const ChainShape& shape, std::size_t 
     p.buffers.push_back({"values", chains * sizeof(ChainValue), false});
     p.buffers.push_back({"splat", pixels(ds) * 3 * sizeof(std::uint64_t), false});
     p.buffers.push_back({"stats", MLT_STAT_COUNT * sizeof(std::uint64_t), false});
+    p.buffers.push_back({"longest run", sizeof(std::uint32_t), false});
     p.buffers.push_back({"picks", chains * sizeof(std::uint32_t), false});
     p.buffers.push_back({"luminance", threads * sizeof(float), true});
     p.buffers.push_back({"scan", threads * sizeof(float), true});
@@ -154,17 +155,24 @@ MemoryPlan check_threads(const DeviceScene& ds, const ChainShape& shape, const D
                          const DeviceBudget& budget) {
     MemoryPlan plan = plan_for(ds, shape, shape.threads, dev);
     if (plan_fits(plan, budget)) return plan;
-    MemoryPlan smallest = plan_for(ds, shape, kMinThreads, dev);
-    if (!plan_fits(smallest, budget)) too_small(smallest, budget);
+    std::uint32_t most = max_threads(ds, shape, dev, budget);
+    if (most == 0) too_small(plan_for(ds, shape, kMinThreads, dev), budget);
+    throw UsageError("--threads " + std::to_string(shape.threads) + " needs " +
+                     format_bytes(plan.total()) + " of device memory (largest buffer " +
+                     format_bytes(plan.largest()) + "); at most " + std::to_string(most) +
+                     " threads fit (or use --threads auto)");
+}
+
+std::uint32_t max_threads(const DeviceScene& ds, ChainShape shape, const DeviceInfo& dev,
+                          const DeviceBudget& budget) {
+    if (plan_fits(plan_for(ds, shape, shape.threads, dev), budget)) return shape.threads;
+    if (!plan_fits(plan_for(ds, shape, kMinThreads, dev), budget)) return 0;
     std::uint32_t lo = kMinThreads, hi = shape.threads; // fits at lo, not at hi
     while (hi - lo > 1) {
         std::uint32_t mid = lo + (hi - lo) / 2;
         (plan_fits(plan_for(ds, shape, mid, dev), budget) ? lo : hi) = mid;
     }
-    throw UsageError("--threads " + std::to_string(shape.threads) + " needs " +
-                     format_bytes(plan.total()) + " of device memory (largest buffer " +
-                     format_bytes(plan.largest()) + "); at most " + std::to_string(lo) +
-                     " threads fit (or use --threads auto)");
+    return lo;
 }
 
 std::string format_bytes(std::uint64_t bytes) {

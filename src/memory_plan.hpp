@@ -77,6 +77,12 @@ ThreadChoice choose_threads(const DeviceScene& ds, ChainShape shape, const Devic
 MemoryPlan check_threads(const DeviceScene& ds, const ChainShape& shape, const DeviceInfo& dev,
                          const DeviceBudget& budget);
 
+// The largest thread count up to shape.threads whose render fits (0 if not
+// even kMinThreads do). Any count fits, not only the powers of two that
+// --threads auto tries.
+std::uint32_t max_threads(const DeviceScene& ds, ChainShape shape, const DeviceInfo& dev,
+                          const DeviceBudget& budget);
+
 // "12.3 MiB"
 std::string format_bytes(std::uint64_t bytes);
 

@@ -33,6 +33,7 @@ const MltOptions& check_proposals(const MltOptions& opt) {
     if (k == 0 || (k & (k - 1)) || k > kDefaultWorkGroup)
         throw UsageError("--proposals: " + std::to_string(k) + " is not a power of two up to " +
                          std::to_string(kDefaultWorkGroup));
+    if (opt.stuck_run == 0) throw UsageError("--stuck-run: must be at least 1");
     if (opt.threads % k)
         throw UsageError("--threads " + std::to_string(opt.threads) + " is not a multiple of " +
                          "--proposals " + std::to_string(k));
@@ -79,10 +80,12 @@ MltRenderer::MltRenderer(const ClContext& cl, const DeviceScene& ds, const MltOp
       values_(cl, CL_MEM_READ_WRITE, plan_.bytes("values")),
       splat_(cl, CL_MEM_READ_WRITE, plan_.bytes("splat")),
       stats_(cl, CL_MEM_READ_WRITE, plan_.bytes("stats")),
+      longest_run_(cl, CL_MEM_READ_WRITE, plan_.bytes("longest run")),
       picks_(cl, CL_MEM_READ_WRITE, plan_.bytes("picks")) {
     state_.fill_zero(cl);
     splat_.fill_zero(cl);
     stats_.fill_zero(cl);
+    longest_run_.fill_zero(cl);
     picks_.fill_zero(cl);
 }
 
@@ -153,7 +156,7 @@ void MltRenderer::step(std::uint32_t n) {
         cl_uint iteration = ++iterations_;
         k_step_.set_args(scene_.tris, scene_.nodes, scene_.mats, scene_.lights, ds_.frame, state_,
                          values_, cl_uint(opt_.threads), cl_uint(opt_.proposals), seed, iteration,
-                         threshold, splat_, stats_);
+                         threshold, splat_, stats_, cl_uint(opt_.stuck_run), longest_run_);
         k_step_.enqueue(cl_, opt_.threads);
     }
     cl_.finish("kernel mlt_step over " + std::to_string(opt_.threads) + " threads");
@@ -173,12 +176,17 @@ MltStats MltRenderer::stats() const {
     out.large = s[MLT_STAT_LARGE];
     out.nonfinite = s[MLT_STAT_NONFINITE];
     out.rays = s[MLT_STAT_RAYS];
+    out.stuck = s[MLT_STAT_STUCK];
+    cl_uint longest = 0;
+    longest_run_.read(cl_, &longest);
+    out.longest_run = longest;
     return out;
 }
 
 std::vector<std::string> MltRenderer::notes() const {
     std::vector<std::string> out;
-    if (std::uint64_t n = stats().nonfinite)
+    MltStats s = stats();
+    if (std::uint64_t n = s.nonfinite)
         out.push_back(
             std::to_string(n) +
             " samples had a NaN or infinite radiance and were dropped (counted as black)");
@@ -195,6 +203,16 @@ std::vector<std::string> MltRenderer::notes() const {
                       b_, 100.0 * b_rel_error_, 100.0 * kMaxBRelError);
         out.push_back(buf);
     }
+    if (s.stuck > 0) {
+        char buf[320];
+        std::snprintf(buf, sizeof buf,
+                      "%llu of %u chains (%.2f%%) stayed on one path for %u steps or more "
+                      "(longest %u): expect bright blotches where they stayed; a larger "
+                      "--large-step lets them leave sooner (doc/stability.md)",
+                      static_cast<unsigned long long>(s.stuck), chains(),
+                      100.0 * double(s.stuck) / chains(), opt_.stuck_run, s.longest_run);
+        out.push_back(buf);
+    }
     if (prepared_ && b_ > 0 && iterations_ == 0)
         out.push_back("no MLT step ran in the time given: burn-in took " +
                       std::to_string(prepare_seconds_) +
@@ -206,15 +224,17 @@ std::string MltRenderer::summary(double) const {
     MltStats s = stats();
     double per_s = step_seconds_ > 0 ? 1e-6 / step_seconds_ : 0.0;
     double per_mutation = s.mutations ? 100.0 / double(s.mutations) : 0.0;
-    char buf[400];
+    char buf[480];
     std::snprintf(buf, sizeof buf,
                   "%u chains x %u proposals x %u steps (state %u B/chain), %.3f M mutations/s, "
                   "%.3f M rays/s (steps only; b and chain start %.2f s), acceptance %.1f%%, "
-                  "large steps %.1f%%, b = %.5g (+-%.2f%%), %llu non-finite dropped",
+                  "large steps %.1f%%, b = %.5g (+-%.2f%%), %llu non-finite dropped, "
+                  "longest run of rejections %u, %llu chains stuck (%u in a row)",
                   chains(), opt_.proposals, iterations_, state_bytes_per_chain(),
                   double(s.mutations) * per_s, double(s.rays) * per_s, prepare_seconds_,
                   double(s.accepted) * per_mutation, double(s.large) * per_mutation, b_,
-                  100.0 * b_rel_error_, static_cast<unsigned long long>(s.nonfinite));
+                  100.0 * b_rel_error_, static_cast<unsigned long long>(s.nonfinite), s.longest_run,
+                  static_cast<unsigned long long>(s.stuck), opt_.stuck_run);
     return buf;
 }
 

@@ -14,6 +14,8 @@
 
 namespace smallmlt {
 
+constexpr std::uint32_t kDefaultStuckRun = 1000;
+
 struct MltOptions {
     std::uint32_t threads = 1u << 16; // N work-items
     std::uint32_t proposals = 1;      // K proposals per chain: N / K chains (a power of two <= 64)
@@ -26,6 +28,9 @@ struct MltOptions {
     bool burn_in = true;
     std::uint32_t burn_in_iters = 32; // chosen by measurement (doc/RESULTS.md)
     bool float32_states = false;      // unpacked float32 states (reference build)
+    // A chain that rejects this many proposals in a row counts as stuck
+    // (reported, not acted on; doc/stability.md).
+    std::uint32_t stuck_run = kDefaultStuckRun;
     // The file that defines mlt_evaluate: cl/eval_path.cl renders the scene;
     // the sampler tests use cl/eval_target.cl, a known 2D target.
     std::string evaluator = "cl/eval_path.cl";
@@ -48,6 +53,8 @@ constexpr double kMaxBRelError = 0.01;
 
 struct MltStats {
     std::uint64_t mutations = 0, accepted = 0, large = 0, nonfinite = 0, rays = 0;
+    std::uint64_t stuck = 0;       // chains that rejected stuck_run proposals in a row
+    std::uint32_t longest_run = 0; // most consecutive rejections of any chain
 };
 
 class MltRenderer : public Integrator {
@@ -100,7 +107,7 @@ class MltRenderer : public Integrator {
     ClProgram program_;
     ClKernel k_lum_, k_init_, k_step_, k_pick_;
     SceneBuffers scene_;
-    ClBuffer state_, values_, splat_, stats_, picks_;
+    ClBuffer state_, values_, splat_, stats_, longest_run_, picks_;
     double b_ = 0, b_rel_error_ = 0;
     bool prepared_ = false;
     std::uint32_t iterations_ = 0;

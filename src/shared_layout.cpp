@@ -3,6 +3,8 @@
 // test/test_layout.cpp compares the two.
 #include "shared_layout.hpp"
 
+#include "scene.hpp"
+
 #include <cstddef>
 
 namespace smallmlt {
@@ -35,7 +37,8 @@ SMALLMLT_CHECK_OFFSET(Frame, depth, 44);
 SMALLMLT_CHECK_OFFSET(Frame, dv, 48);
 SMALLMLT_CHECK_OFFSET(Frame, num_lights, 60);
 static_assert(sizeof(ChainValue) == 16, "ChainValue");
-SMALLMLT_CHECK_OFFSET(ChainValue, bounces, 12);
+SMALLMLT_CHECK_OFFSET(ChainValue, meta, 12);
+static_assert(kMaxDepth <= CHAIN_BOUNCES_MASK, "ChainValue.meta holds the live bounces");
 #undef SMALLMLT_CHECK_OFFSET
 
 std::vector<std::uint32_t> host_layout() {
@@ -66,7 +69,7 @@ std::vector<std::uint32_t> host_layout() {
             offsetof(Frame, dv),
             offsetof(Frame, num_lights),
             sizeof(ChainValue),
-            offsetof(ChainValue, bounces)};
+            offsetof(ChainValue, meta)};
 }
 
 } // namespace smallmlt

@@ -30,7 +30,10 @@ truth threads_rows rows "$R/threads/threads.csv" 4
 truth memory_rows rows "$R/memory/k1.csv" 24
 truth burnin_rows rows "$R/burnin/error.csv" 6
 truth proposals_rows rows "$R/proposals/error.csv" 6
-for f in threads/threads.png memory/memory.png burnin/figure1.png burnin/error.png proposals/crops.png proposals/error.png; do
+truth stuck_error_methods [ "$(cut -d, -f1 "$R/stuck/error.csv" | tail -n +2 | sort -u | tr '\n' ' ')" = "mlt-p0.1 mlt-p0.5 pt " ]
+truth stuck_counts_rows rows "$R/stuck/stuck.csv" 2
+truth stuck_counts_numbers awk -F, 'NR > 1 && !($3 > 0 && $4 > 0 && $5 >= 0 && $6 >= 0 && $5 <= $3) {exit 1}' "$R/stuck/stuck.csv"
+for f in stuck/error.png threads/threads.png memory/memory.png burnin/figure1.png burnin/error.png proposals/crops.png proposals/error.png; do
     truth "chart_$f" png "$R/$f"
 done
 [ "$fail" -eq 0 ] || tail -n 20 "$DIR/all.log"

@@ -7,6 +7,7 @@
 #include "path_tracer.hpp"
 #include "scene.hpp"
 
+#include <array>
 #include <cstdio>
 #include <fstream>
 #include <string>
@@ -41,6 +42,22 @@ inline std::string scratch_dir(const std::string& name) {
     std::string cmd = "rm -rf '" + dir + "' && mkdir -p '" + dir + "'";
     if (std::system(cmd.c_str()) != 0) throw std::runtime_error("cannot make " + dir);
     return dir;
+}
+
+// Each quadrant's share of the image's total luminance (top left, top right,
+// bottom left, bottom right): where the light went, whatever the scale.
+inline std::array<double, 4> quadrant_shares(const Image& img) {
+    std::array<double, 4> q{};
+    double total = 0;
+    for (int y = 0; y < img.height; ++y)
+        for (int x = 0; x < img.width; ++x) {
+            double l = img.luminance(std::size_t(y) * img.width + x);
+            q[(2 * y / img.height) * 2 + 2 * x / img.width] += l;
+            total += l;
+        }
+    for (double& v : q)
+        v = total > 0 ? v / total : 0;
+    return q;
 }
 
 inline void write_file(const std::string& path, const std::string& text) {
