@@ -55,6 +55,9 @@ MLT options:
                      estimate the normalization b
   --large-step P     probability that a mutation draws a whole new path
                      (default 0.1 with burn-in, 0.5 without)
+  --stuck-run R      a chain that rejects R proposals in a row counts as stuck
+                     (default 1000); the summary gives how many did and the
+                     longest run, and a note warns when any did
 
 Budget options:
   --threads N|auto   as for render (default auto)
@@ -64,7 +67,8 @@ Budget options:
   --format table|csv|json
   --device INDEX
 
-Exit status: 0 success, 1 bad input or device error, 2 bad command line.
+Exit status: 0 success, 1 bad input or device error, 2 bad command line,
+3 interrupted (the image so far was written).
 The scene format is described in doc/scene-format.md.
 )";
 }
@@ -186,6 +190,8 @@ RenderOptions parse_render(ArgReader& r) {
                 throw UsageError("--method: '" + m + "' is not a method (pt or mlt)");
         } else if (flag == "--large-step") {
             o.large_step = float(to_unit_interval(flag, r.value(flag, arg)));
+        } else if (flag == "--stuck-run") {
+            o.stuck_run = std::uint32_t(to_int(flag, r.value(flag, arg), 1, CHAIN_RUN_MAX));
         } else if (flag == "--burn-in") {
             std::string b = r.value(flag, arg);
             if (b == "omc")

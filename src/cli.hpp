@@ -24,6 +24,7 @@ struct RenderOptions {
     std::optional<std::uint64_t> device_mem;
     bool burn_in = true;
     std::uint32_t burn_in_iters = MltOptions().burn_in_iters;
+    std::uint32_t stuck_run = MltOptions().stuck_run;
     std::optional<std::uint32_t> spp;
     std::optional<double> time_s;
     std::uint64_t seed = 1;

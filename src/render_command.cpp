@@ -89,6 +89,7 @@ std::unique_ptr<Integrator> make_integrator(const RenderOptions& o, const ClCont
     m.seed = o.seed;
     m.burn_in = o.burn_in;
     m.burn_in_iters = o.burn_in_iters;
+    m.stuck_run = o.stuck_run;
     return std::make_unique<MltRenderer>(cl, ds, m);
 }
 
