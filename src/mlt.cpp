@@ -207,8 +207,8 @@ std::vector<std::string> MltRenderer::notes() const {
         char buf[320];
         std::snprintf(buf, sizeof buf,
                       "%llu of %u chains (%.2f%%) stayed on one path for %u steps or more "
-                      "(longest %u): expect bright blotches where they stayed; a larger "
-                      "--large-step lets them leave sooner (doc/stability.md)",
+                      "(longest %u): expect bright blotches where they stayed, fading as "
+                      "the render goes on (doc/stability.md)",
                       static_cast<unsigned long long>(s.stuck), chains(),
                       100.0 * double(s.stuck) / chains(), opt_.stuck_run, s.longest_run);
         out.push_back(buf);
