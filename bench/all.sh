@@ -17,9 +17,9 @@ t0=$(date +%s)
 step() { echo "== $* ($(($(date +%s) - t0)) s)"; }
 
 if [ -n "${QUICK:-}" ]; then
-    export REF_SECONDS=${REF_SECONDS:-4} THREADS=${THREADS:-1024}
+    export REF_SECONDS=${REF_SECONDS:-2} THREADS=${THREADS:-1024}
     step error against time
-    SIZE=32 SECONDS=1.5 SEEDS=1 LOG_EVERY=0.25 sh bench/error_time.sh "$BIN"
+    SIZE=32 SECONDS=1 SEEDS=1 LOG_EVERY=0.25 sh bench/error_time.sh "$BIN"
     step throughput against threads
     SIZE=32 SPP=4 MAX_THREADS=2048 sh bench/threads.sh "$BIN" 1
     step memory against depth
@@ -29,7 +29,7 @@ if [ -n "${QUICK:-}" ]; then
     step split-transition strip
     SIZE=32 TIMES="0.5 1" KS="1 2 4" sh bench/proposals.sh "$BIN"
     step stuck chains
-    SIZE=32 SECONDS=1.5 SEEDS=1 LARGE_STEPS="0.1 0.5" LOG_EVERY=0.25 sh bench/stuck.sh "$BIN"
+    SIZE=32 SECONDS=1 SEEDS=1 LARGE_STEPS="0.1 0.5" LOG_EVERY=0.25 sh bench/stuck.sh "$BIN"
 else
     step error against time
     sh bench/error_time.sh "$BIN"
