@@ -121,9 +121,8 @@ __kernel void mlt_step(__global const Triangle* tris, __global const BvhNode* no
     float ix = path_luminance(fx);
     ulong key = rng_key(seed, t, iteration);
     bool large = rng_u32(key, MLT_DIM_LARGE) < large_threshold;
-    SampleSource src =
-        smp_chain(state, active ? c : 0u, chains, key, large ? SMP_LARGE : SMP_SMALL,
-                                  chain_bounces(x));
+    SampleSource src = smp_chain(state, active ? c : 0u, chains, key, large ? SMP_LARGE : SMP_SMALL,
+                                 chain_bounces(x));
     MltSample y;
     y.rays = 0u;
     float a = 0.0f;

@@ -47,8 +47,8 @@ __kernel void probe_lazy_eager(__global const Triangle* tris, __global const Bvh
     if (c >= num_chains) return;
     SceneView sc = path_scene(tris, nodes, mats, lights, &frame);
     uint mode = (c & 1u) ? SMP_LARGE : SMP_SMALL;
-    SampleSource lazy =
-        smp_chain(state, c, num_chains, rng_key(seed, c, 1u), mode, values[c].meta & CHAIN_BOUNCES_MASK);
+    SampleSource lazy = smp_chain(state, c, num_chains, rng_key(seed, c, 1u), mode,
+                                  values[c].meta & CHAIN_BOUNCES_MASK);
     MltSample y = mlt_evaluate(&sc, &frame, &lazy);
     out[3u * c] = (float4)(y.f, as_float(y.bounces));
 

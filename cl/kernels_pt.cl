@@ -19,7 +19,8 @@ __kernel void pt_render(__global const Triangle* tris, __global const BvhNode* n
         float fx = (px + smp_uniform(&src, 0u, layout_film(0u))) / (float)frame.width;
         float fy = (py + smp_uniform(&src, 0u, layout_film(1u))) / (float)frame.height;
         PathResult r = path_trace(&sc, &src, camera_ray(&frame, fx, fy));
-        acc += path_finite(r.radiance) ? (float4)(r.radiance, 0.0f) : (float4)(0.0f, 0.0f, 0.0f, 1.0f);
+        acc +=
+            path_finite(r.radiance) ? (float4)(r.radiance, 0.0f) : (float4)(0.0f, 0.0f, 0.0f, 1.0f);
         rays += r.rays;
     }
     accum[pixel] = acc;
