@@ -4,6 +4,7 @@
 
 CXX      ?= g++
 SAN      ?= 0
+JOBS     ?= $(shell nproc)
 BUILD    := $(if $(filter 1,$(SAN)),build-san,build)
 CXXFLAGS := -std=c++17 -O2 -g -Wall -Wextra -Werror -Isrc -Icl -MMD -MP
 LDLIBS   := -lOpenCL -ltinyobjloader -ltinyexr -lstb -lpthread
@@ -18,12 +19,12 @@ DEB_PACKAGES := g++ make pocl-opencl-icd ocl-icd-opencl-dev opencl-headers libst
 # `make fuzz` only: libFuzzer comes with clang's runtime libraries.
 FUZZ_PACKAGES := clang libclang-rt-dev
 FUZZ_SECONDS  ?= 60
-FUZZ_SRC      := $(addprefix src/,scene.cpp obj_loader.cpp mtl_loader.cpp text_parse.cpp \
+FUZZ_SRC      := $(addprefix src/scene/,scene.cpp obj_loader.cpp mtl_loader.cpp text_parse.cpp \
                    bvh.cpp device_scene.cpp sample_layout.cpp)
 
 CL_FILES   := $(sort $(wildcard cl/*.h cl/*.cl))
-LIB_SRC    := $(filter-out src/main.cpp,$(wildcard src/*.cpp))
-LIB_OBJ    := $(LIB_SRC:src/%.cpp=$(BUILD)/obj/%.o) $(BUILD)/obj/kernel_sources.o
+LIB_SRC    := $(filter-out src/app/main.cpp,$(wildcard src/*/*.cpp))
+LIB_OBJ    := $(LIB_SRC:src/%.cpp=$(BUILD)/obj/%.o) $(BUILD)/obj/gen/kernel_sources.o
 TEST_SRC   := $(wildcard test/*.cpp)
 TEST_OBJ   := $(TEST_SRC:test/%.cpp=$(BUILD)/obj/test/%.o)
 BIN        := $(BUILD)/smallmlt
@@ -43,11 +44,11 @@ deps deps-fuzz:
 	  apt-get update -qq && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq $$missing; \
 	fi
 
-$(BUILD)/gen/kernel_sources.cpp: $(CL_FILES) src/embed_kernels.sh
+$(BUILD)/gen/kernel_sources.cpp: $(CL_FILES) src/device/embed_kernels.sh
 	@mkdir -p $(dir $@)
-	sh src/embed_kernels.sh $(CL_FILES) > $@.tmp && mv $@.tmp $@
+	sh src/device/embed_kernels.sh $(CL_FILES) > $@.tmp && mv $@.tmp $@
 
-$(BUILD)/obj/kernel_sources.o: $(BUILD)/gen/kernel_sources.cpp
+$(BUILD)/obj/gen/kernel_sources.o: $(BUILD)/gen/kernel_sources.cpp
 	@mkdir -p $(dir $@)
 	$(CXX) $(CXXFLAGS) -c $< -o $@
 
@@ -62,7 +63,7 @@ $(BUILD)/obj/test/%.o: test/%.cpp
 $(BUILD)/libsmallmlt.a: $(LIB_OBJ)
 	ar rcs $@ $^
 
-$(BIN): $(BUILD)/obj/main.o $(BUILD)/libsmallmlt.a
+$(BIN): $(BUILD)/obj/app/main.o $(BUILD)/libsmallmlt.a
 	$(CXX) $(LDFLAGS) $^ -o $@ $(LDLIBS)
 
 $(TEST_BIN): $(TEST_OBJ) $(BUILD)/libsmallmlt.a
@@ -74,7 +75,7 @@ run: deps
 	$(BIN) render scenes/cornell-water.scene --out out/cornell-water.png
 
 test: deps
-	$(MAKE) $(BIN) $(TEST_BIN)
+	$(MAKE) -j$(JOBS) $(BIN) $(TEST_BIN)
 	SMALLMLT_BIN=$(BIN) sh test/run_all.sh $(TEST_BIN)
 
 bench: deps
@@ -98,9 +99,9 @@ fuzz: deps deps-fuzz
 	cd build/fuzz && ./fuzz_scene -max_total_time=$(FUZZ_SECONDS) -max_len=65536 -print_final_stats=1 corpus
 
 format:
-	clang-format -i src/*.cpp src/*.hpp test/*.cpp test/*.hpp cl/*.cl cl/*.h
+	clang-format -i src/*/*.cpp src/*/*.hpp test/*.cpp test/*.hpp cl/*.cl cl/*.h
 
 clean:
 	rm -rf build build-san
 
--include $(wildcard $(BUILD)/obj/*.d $(BUILD)/obj/test/*.d)
+-include $(wildcard $(BUILD)/obj/*/*.d)

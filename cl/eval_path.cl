@@ -2,12 +2,12 @@
  * and 1 (uniform over the whole film), then the path. The sampler tests swap
  * this file for one with a known target function. */
 
-inline MltSample mlt_evaluate(const SceneView* sc, const Frame* frame, SampleSource* src) {
+inline EvalResult eval_state(const SceneView* sc, const Frame* frame, SampleSource* src) {
     float fx = smp_uniform(src, 0u, layout_film(0u)), fy = smp_uniform(src, 0u, layout_film(1u));
     PathResult r = path_trace(sc, src, camera_ray(frame, fx, fy));
-    MltSample s;
+    EvalResult s;
     s.f = r.radiance;
-    s.pixel = mlt_pixel(frame, fx, fy);
+    s.pixel = eval_pixel(frame, fx, fy);
     s.bounces = r.bounces;
     s.rays = r.rays;
     return s;

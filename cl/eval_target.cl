@@ -10,11 +10,11 @@ inline float target_value(float x, float y) {
     return (1.0f + 3.0f * x) * (1.0f + s * s);
 }
 
-inline MltSample mlt_evaluate(const SceneView* sc, const Frame* frame, SampleSource* src) {
+inline EvalResult eval_state(const SceneView* sc, const Frame* frame, SampleSource* src) {
     float x = smp_uniform(src, 0u, layout_film(0u)), y = smp_uniform(src, 0u, layout_film(1u));
-    MltSample s;
+    EvalResult s;
     s.f = (float3)(target_value(x, y));
-    s.pixel = mlt_pixel(frame, x, y);
+    s.pixel = eval_pixel(frame, x, y);
     s.bounces = 0u;
     s.rays = 0u;
     return s;

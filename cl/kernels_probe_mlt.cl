@@ -49,22 +49,22 @@ __kernel void probe_lazy_eager(__global const Triangle* tris, __global const Bvh
     uint mode = (c & 1u) ? SMP_LARGE : SMP_SMALL;
     SampleSource lazy = smp_chain(state, c, num_chains, rng_key(seed, c, 1u), mode,
                                   values[c].meta & CHAIN_BOUNCES_MASK);
-    MltSample y = mlt_evaluate(&sc, &frame, &lazy);
+    EvalResult y = eval_state(&sc, &frame, &lazy);
     out[3u * c] = (float4)(y.f, as_float(y.bounces));
 
     for (uint d = 0; d < probe_dims(frame.depth); ++d) {
         LayoutSlot at = probe_slot(d);
         uint bounce =
             d < LAYOUT_CAMERA_DIMS ? 0u : (d - LAYOUT_CAMERA_DIMS) / max(LAYOUT_BOUNCE_DIMS, 1u);
-        pss_store(eager, c, num_chains, at, mlt_propose(&lazy, bounce, at));
+        pss_store(eager, c, num_chains, at, smp_propose(&lazy, bounce, at));
     }
     SampleSource replay_eager = smp_chain(eager, c, num_chains, 0ul, SMP_REPLAY, frame.depth);
-    MltSample e = mlt_evaluate(&sc, &frame, &replay_eager);
+    EvalResult e = eval_state(&sc, &frame, &replay_eager);
     out[3u * c + 1u] = (float4)(e.f, as_float(e.bounces));
 
-    mlt_commit(&lazy, y.bounces);
+    smp_commit(&lazy, y.bounces);
     SampleSource replay_state = smp_chain(state, c, num_chains, 0ul, SMP_REPLAY, y.bounces);
-    MltSample r = mlt_evaluate(&sc, &frame, &replay_state);
+    EvalResult r = eval_state(&sc, &frame, &replay_state);
     out[3u * c + 2u] = (float4)(r.f, as_float(r.bounces));
 }
 
@@ -73,6 +73,6 @@ __kernel void probe_chain_pixel(const Frame frame, __global const uint* state,
                                 const uint num_chains, __global uint* out) {
     uint c = get_global_id(0);
     if (c >= num_chains) return;
-    out[c] = mlt_pixel(&frame, pss_load(state, c, num_chains, layout_film(0u)),
-                       pss_load(state, c, num_chains, layout_film(1u)));
+    out[c] = eval_pixel(&frame, pss_load(state, c, num_chains, layout_film(0u)),
+                        pss_load(state, c, num_chains, layout_film(1u)));
 }

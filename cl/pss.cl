@@ -39,7 +39,7 @@ inline float pss_load(const __global uint* state, uint chain, uint stride, Layou
 }
 
 /* Stores u, which must lie on the slot's grid (as pss_load and the
- * proposals of sample_mlt.cl produce). */
+ * proposals of sample_chain.cl produce). */
 inline void pss_store(__global uint* state, uint chain, uint stride, LayoutSlot at, float u) {
     pss_write_bits(state, chain, stride, at.bit_offset, at.bits,
                    (uint)(u * (float)(1u << at.bits)));

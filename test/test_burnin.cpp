@@ -1,9 +1,9 @@
 // Burn-in by OMC: the device scan is a prefix sum, picks are proportional to
 // luminance, and chains that start where the light is remove most of the
 // startup bias.
-#include "image_metrics.hpp"
-#include "mlt.hpp"
-#include "scan.hpp"
+#include "device/scan.hpp"
+#include "image/image_metrics.hpp"
+#include "render/mlt.hpp"
 #include "test_support.hpp"
 
 #include <gtest/gtest.h>

@@ -1,6 +1,6 @@
 // The BVH: its structure is sound, and the device traversal finds the same
 // closest hits as brute-force intersection of every triangle.
-#include "bvh.hpp"
+#include "scene/bvh.hpp"
 #include "test_support.hpp"
 
 #include <gtest/gtest.h>

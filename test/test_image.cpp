@@ -1,6 +1,6 @@
 // Image files: PFM and EXR hold linear radiance exactly; the format follows
 // the extension; writes leave no temporary file behind.
-#include "error.hpp"
+#include "base/error.hpp"
 #include "test_support.hpp"
 
 #include <gtest/gtest.h>

@@ -1,7 +1,7 @@
 // Shared struct layouts agree between host and device, and the sample layout
 // has exactly the slots a scene needs.
-#include "sample_layout.hpp"
-#include "shared_layout.hpp"
+#include "scene/sample_layout.hpp"
+#include "scene/shared_layout.hpp"
 #include "test_support.hpp"
 
 #include <gtest/gtest.h>

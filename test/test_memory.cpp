@@ -1,9 +1,9 @@
 // Memory budget: the plan predicts exactly what a render allocates, and the
 // thread count follows the device memory and its largest allocation.
-#include "error.hpp"
-#include "memory_plan.hpp"
-#include "mlt.hpp"
-#include "scan.hpp"
+#include "base/error.hpp"
+#include "device/memory_plan.hpp"
+#include "device/scan.hpp"
+#include "render/mlt.hpp"
 #include "test_support.hpp"
 
 #include <gtest/gtest.h>

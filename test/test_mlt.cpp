@@ -1,9 +1,9 @@
 // Primary-sample-space MLT: packed storage is exact, lazy proposals are the
 // eager ones, the sampler reproduces a known target, and renders agree with
 // path tracing.
-#include "image_metrics.hpp"
-#include "mlt.hpp"
-#include "sample_layout.hpp"
+#include "image/image_metrics.hpp"
+#include "render/mlt.hpp"
+#include "scene/sample_layout.hpp"
 #include "test_support.hpp"
 
 #include <gtest/gtest.h>
@@ -88,8 +88,8 @@ TEST(MltPacking, RoundTripIsBitExact) {
 TEST(MltPacking, StateSizeFollowsTheLayout) {
     SampleLayout water = make_layout({true, false, true, 2, 24});
     EXPECT_EQ(water.vector_bits(), 2 * 24 + 24 * (4 * 24 + 3 * 16));
-    EXPECT_EQ(mlt_words_per_chain(water, false), std::uint32_t((water.vector_bits() + 31) / 32));
-    EXPECT_EQ(mlt_words_per_chain(water, true), std::uint32_t(water.vector_dims()));
+    EXPECT_EQ(water.chain_words(false), std::uint32_t((water.vector_bits() + 31) / 32));
+    EXPECT_EQ(water.chain_words(true), std::uint32_t(water.vector_dims()));
 }
 
 // For fixed keys, the path traced from a lazily evaluated proposal equals the

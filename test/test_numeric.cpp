@@ -1,7 +1,7 @@
 // Numerical trouble: NaN radiance from some paths never reaches the image
 // and is counted (PT and MLT), and a scene whose light is boxed in renders
 // black without dividing by zero.
-#include "mlt.hpp"
+#include "render/mlt.hpp"
 #include "test_support.hpp"
 
 #include <gtest/gtest.h>

@@ -3,8 +3,8 @@
 // refuses names the kernel and its sizes, and a device without the 64-bit
 // atomics MLT needs is refused with a way out. (No platform at all is
 // checked from the command line: test/cli_test.sh, no_platform.)
-#include "error.hpp"
-#include "mlt.hpp"
+#include "base/error.hpp"
+#include "render/mlt.hpp"
 #include "test_support.hpp"
 
 #include <gtest/gtest.h>

@@ -1,6 +1,6 @@
 // Scene, OBJ and MTL readers: a valid scene loads; each unsupported or
 // malformed input gives its own error naming the file and line.
-#include "error.hpp"
+#include "base/error.hpp"
 #include "test_support.hpp"
 
 #include <gtest/gtest.h>

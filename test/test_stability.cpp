@@ -4,9 +4,9 @@
 // truncated paths give PT's image. Every comparison with PT checks the mean
 // (which b sets) and each quadrant's share of the light (where the chains
 // went), with the fixed seeds and tolerances stated beside each test.
-#include "memory_plan.hpp"
-#include "mlt.hpp"
-#include "scan.hpp"
+#include "device/memory_plan.hpp"
+#include "device/scan.hpp"
+#include "render/mlt.hpp"
 #include "test_support.hpp"
 
 #include <gtest/gtest.h>

@@ -1,11 +1,11 @@
 // Helpers shared by the tests: one OpenCL context per test binary, scene
 // loading with overrides, and small statistics.
 #pragma once
-#include "device_scene.hpp"
-#include "image.hpp"
-#include "ocl.hpp"
-#include "path_tracer.hpp"
-#include "scene.hpp"
+#include "device/ocl.hpp"
+#include "image/image.hpp"
+#include "render/path_tracer.hpp"
+#include "scene/device_scene.hpp"
+#include "scene/scene.hpp"
 
 #include <array>
 #include <cstdio>

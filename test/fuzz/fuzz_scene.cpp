@@ -4,9 +4,9 @@
 // private directory and loaded as a render would. InputError is the expected
 // answer to bad input; anything else (a crash, a sanitizer report, another
 // exception) is a finding. Built and run by `make fuzz`.
-#include "device_scene.hpp"
-#include "error.hpp"
-#include "scene.hpp"
+#include "scene/device_scene.hpp"
+#include "base/error.hpp"
+#include "scene/scene.hpp"
 
 #include <cstdint>
 #include <cstdio>

@@ -1,0 +1,65 @@
+// Command-line parsing. Bad flags and values throw UsageError naming the flag.
+#pragma once
+#include "render/mlt.hpp"
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace smallmlt {
+
+constexpr std::uint32_t kDefaultSpp = 16;
+constexpr float kDefaultLargeStepBurnIn = 0.1f;   // with OMC burn-in (doc/RESULTS.md)
+constexpr float kDefaultLargeStepNoBurnIn = 0.5f; // the paper's baseline without
+
+enum class Method { Pt, Mlt };
+
+struct RenderOptions {
+    std::string scene;
+    Method method = Method::Mlt;
+    std::optional<float> large_step;      // default depends on burn-in
+    std::optional<std::uint32_t> threads; // unset: auto (src/memory_plan.hpp)
+    std::uint32_t proposals = 1;          // K: threads per chain
+    std::optional<std::uint64_t> device_mem;
+    bool burn_in = true;
+    std::uint32_t burn_in_iters = MltOptions().burn_in_iters;
+    std::uint32_t stuck_run = MltOptions().stuck_run;
+    std::optional<std::uint32_t> spp;
+    std::optional<double> time_s;
+    std::uint64_t seed = 1;
+    std::vector<std::string> outs;
+    std::string reference;       // --reference: error measured against it
+    std::string log;             // --log: CSV of error against render time
+    double log_interval_s = 1.0; // --log-every
+    std::optional<int> width, height, depth;
+    int device = 0;
+    bool quiet = false;
+};
+
+enum class CommandKind { Render, Budget, Compare, Devices, Help, Version };
+
+enum class BudgetFormat { Table, Csv, Json };
+
+struct BudgetOptions {
+    std::string scene;
+    std::optional<std::uint32_t> threads; // unset: auto
+    std::uint32_t proposals = 1;
+    std::optional<int> depth;
+    std::optional<std::uint64_t> device_mem;
+    BudgetFormat format = BudgetFormat::Table;
+    int device = 0;
+};
+
+struct Command {
+    CommandKind kind = CommandKind::Help;
+    RenderOptions render;
+    BudgetOptions budget;
+    std::string image, reference; // compare
+};
+
+Command parse_command_line(int argc, const char* const* argv);
+
+const char* usage_text();
+
+} // namespace smallmlt

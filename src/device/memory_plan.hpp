@@ -1,0 +1,93 @@
+// The one place that knows every device buffer a render allocates and its
+// size, as a function of the scene, film, depth, thread count N and proposals
+// per chain K. The renderers allocate with these sizes; ClContext counts what
+// was allocated, and tests compare the two.
+#pragma once
+#include "device/ocl.hpp"
+#include "scene/device_scene.hpp"
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace smallmlt {
+
+struct PlannedBuffer {
+    std::string name;
+    std::uint64_t bytes; // as allocated (device_alloc_bytes)
+    bool burn_in_only;   // freed once the chains have started
+};
+
+struct MemoryPlan {
+    std::vector<PlannedBuffer> buffers;
+    std::uint64_t total() const;                        // all at once: the peak of a render
+    std::uint64_t largest() const;                      // the biggest single buffer
+    std::uint64_t bytes(const std::string& name) const; // requested size (0 if empty)
+    std::uint64_t sum(bool chain_state) const;          // chain state buffers or the rest
+};
+
+// What a render stores per chain and how many chains it has.
+struct ChainShape {
+    std::uint32_t threads = 1u << 16;
+    std::uint32_t proposals = 1; // K: threads per chain
+    bool float32_states = false;
+    std::uint32_t chains() const { return threads / proposals; }
+};
+
+// Throws UsageError unless K is a power of two up to kDefaultWorkGroup (a
+// chain's K work-items meet in one work-group) and divides the threads.
+void check_chain_shape(const ChainShape& shape);
+
+MemoryPlan plan_pt(const DeviceScene& ds);
+MemoryPlan plan_mlt(const DeviceScene& ds, const ChainShape& shape, std::size_t scan_wg);
+
+// What the render may use: the device's memory (or --device-mem) and its
+// largest single allocation.
+struct DeviceBudget {
+    std::uint64_t global_bytes = 0, max_alloc_bytes = 0;
+    bool emulated = false; // from --device-mem
+};
+
+// A render may use this fraction of device memory (the rest is left to the
+// driver, the display and other programs).
+constexpr double kMemoryFraction = 0.5;
+constexpr std::uint32_t kMinThreads = 64; // one work-group: the smallest useful render
+
+// --device-mem B emulates a device of B bytes (never more than the real one)
+// whose largest allocation is B / 4, the least OpenCL allows.
+DeviceBudget device_budget(const DeviceInfo& dev, std::optional<std::uint64_t> device_mem);
+
+bool plan_fits(const MemoryPlan& plan, const DeviceBudget& b);
+
+// Threads that keep the device busy: 8 work-groups of the largest size per
+// compute unit, rounded up to a power of two, within [2^10, 2^20].
+std::uint32_t busy_threads(const DeviceInfo& dev);
+
+struct ThreadChoice {
+    std::uint32_t threads = 0;
+    std::uint32_t reduction = 1; // busy_threads / threads
+    MemoryPlan plan;
+};
+
+// --threads auto: busy_threads halved until the plan fits. Throws
+// InputError, naming the smallest device memory that would do, when not even
+// kMinThreads fit.
+ThreadChoice choose_threads(const DeviceScene& ds, ChainShape shape, const DeviceInfo& dev,
+                            const DeviceBudget& budget);
+
+// --threads N given: throws UsageError naming the largest N that fits if it
+// does not.
+MemoryPlan check_threads(const DeviceScene& ds, const ChainShape& shape, const DeviceInfo& dev,
+                         const DeviceBudget& budget);
+
+// The largest thread count up to shape.threads whose render fits (0 if not
+// even kMinThreads do). Any count fits, not only the powers of two that
+// --threads auto tries.
+std::uint32_t max_threads(const DeviceScene& ds, ChainShape shape, const DeviceInfo& dev,
+                          const DeviceBudget& budget);
+
+// "12.3 MiB"
+std::string format_bytes(std::uint64_t bytes);
+
+} // namespace smallmlt

@@ -1,0 +1,64 @@
+#include "render/convergence_log.hpp"
+
+#include "base/error.hpp"
+#include "image/image_metrics.hpp"
+
+#include <cerrno>
+#include <cmath>
+#include <cstring>
+#include <unistd.h>
+
+namespace smallmlt {
+
+ConvergenceLog::ConvergenceLog(const std::string& reference_path, const std::string& log_path,
+                               double interval_s, int width, int height)
+    : reference_(read_image(reference_path)), log_path_(log_path), interval_s_(interval_s),
+      next_s_(interval_s), pixels_(std::uint64_t(width) * std::uint64_t(height)) {
+    if (reference_.width != width || reference_.height != height)
+        throw InputError("--reference " + reference_path + ": image is " +
+                         std::to_string(reference_.width) + "x" +
+                         std::to_string(reference_.height) + ", the film " + std::to_string(width) +
+                         "x" + std::to_string(height));
+    if (log_path_.empty()) return;
+    std::size_t slash = log_path_.find_last_of('/');
+    std::size_t base = slash == std::string::npos ? 0 : slash + 1;
+    tmp_path_ = log_path_.substr(0, base) + ".tmp-" + std::to_string(getpid()) + "-" +
+                log_path_.substr(base);
+    tmp_guard_ = std::make_unique<TempFileGuard>(tmp_path_);
+    log_ = std::fopen(tmp_path_.c_str(), "w");
+    if (!log_) throw InputError("--log " + log_path_ + ": " + std::strerror(errno));
+    std::fputs("seconds,samples_per_pixel,samples,mse,rel_mse\n", log_);
+    std::fflush(log_);
+}
+
+ConvergenceLog::~ConvergenceLog() {
+    if (!log_) return;
+    std::fclose(log_);
+    std::remove(tmp_path_.c_str());
+}
+
+void ConvergenceLog::record(double render_s, double spp, const Image& img) {
+    last_ = {render_s, spp, image_mse(img, reference_), image_rel_mse(img, reference_)};
+    measured_ = true;
+    if (!log_) return;
+    std::fprintf(log_, "%.4f,%.6g,%llu,%.9g,%.9g\n", render_s, spp,
+                 static_cast<unsigned long long>(std::llround(spp * double(pixels_))), last_.mse,
+                 last_.rel_mse);
+    std::fflush(log_);
+    while (next_s_ <= render_s)
+        next_s_ += interval_s_;
+}
+
+void ConvergenceLog::finish(double render_s, double spp, const Image& img) {
+    if (!measured_ || last_.spp != spp) record(render_s, spp, img);
+    if (!log_) return;
+    bool ok = std::fclose(log_) == 0;
+    log_ = nullptr;
+    if (!ok || std::rename(tmp_path_.c_str(), log_path_.c_str()) != 0) {
+        std::string why = std::strerror(errno);
+        std::remove(tmp_path_.c_str());
+        throw InputError("--log " + log_path_ + ": cannot write: " + why);
+    }
+}
+
+} // namespace smallmlt

@@ -1,0 +1,241 @@
+#include "render/mlt.hpp"
+
+#include "base/clock.hpp"
+#include "base/error.hpp"
+#include "base/rng.hpp"
+#include "device/scan.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+namespace smallmlt {
+
+namespace {
+
+// Seeds of the three kinds of streams of a render.
+constexpr std::uint64_t kPurposeOmc = 1, kPurposePick = 2, kPurposeStep = 3;
+
+std::string program_defines(const ClContext& cl, const DeviceScene& ds, const MltOptions& opt) {
+    std::string d = ds.layout.defines() + scan_defines(cl.device()) + "#define MLT_GROUP " +
+                    std::to_string(kDefaultWorkGroup) + "u\n";
+    if (opt.float32_states) d += "#define PSS_FLOAT32 1\n";
+    return d;
+}
+
+ChainShape chain_shape(const MltOptions& opt) {
+    return ChainShape{opt.threads, opt.proposals, opt.float32_states};
+}
+
+const MltOptions& check_options(const MltOptions& opt) {
+    check_chain_shape(chain_shape(opt));
+    if (opt.stuck_run == 0) throw UsageError("--stuck-run: must be at least 1");
+    return opt;
+}
+
+const DeviceScene& require_atomics(const ClContext& cl, const DeviceScene& ds) {
+    mlt_require_device(cl.device());
+    return ds;
+}
+
+} // namespace
+
+void mlt_require_device(const DeviceInfo& d) {
+    if (!d.int64_atomics)
+        throw InputError("device " + d.name +
+                         " lacks cl_khr_int64_base_atomics, which MLT splatting needs; "
+                         "use --method pt on it");
+}
+
+std::vector<std::string> mlt_program_files(const MltOptions& opt) {
+    std::vector<std::string> files = {
+        "cl/shared_types.h",  "cl/rng.cl",         "cl/layout.cl",   "cl/pss.cl",
+        "cl/sample_chain.cl", "cl/geometry.cl",    "cl/bvh.cl",      "cl/bsdf.cl",
+        "cl/light.cl",        "cl/path.cl",        "cl/camera.cl",   "cl/eval_result.cl",
+        opt.evaluator,        "cl/chain_value.cl", "cl/mlt_step.cl", "cl/kernels_mlt.cl",
+        "cl/scan.cl",         "cl/burnin.cl"};
+    files.insert(files.end(), opt.extra_files.begin(), opt.extra_files.end());
+    return files;
+}
+
+MltRenderer::MltRenderer(const ClContext& cl, const DeviceScene& ds, const MltOptions& opt)
+    : cl_(cl), ds_(require_atomics(cl, ds)), opt_(check_options(opt)),
+      plan_(plan_mlt(ds, chain_shape(opt), scan_work_group(cl.device()))),
+      program_(cl.build(mlt_program_files(opt), program_defines(cl, ds, opt))),
+      k_lum_(program_.p, "mlt_luminance"), k_init_(program_.p, "mlt_init"),
+      k_step_(program_.p, "mlt_step"), k_pick_(program_.p, "burnin_pick"), scene_(cl, ds),
+      state_(cl, CL_MEM_READ_WRITE, plan_.bytes("state")),
+      values_(cl, CL_MEM_READ_WRITE, plan_.bytes("values")),
+      splat_(cl, CL_MEM_READ_WRITE, plan_.bytes("splat")),
+      stats_(cl, CL_MEM_READ_WRITE, plan_.bytes("stats")),
+      longest_run_(cl, CL_MEM_READ_WRITE, plan_.bytes("longest run")),
+      picks_(cl, CL_MEM_READ_WRITE, plan_.bytes("picks")) {
+    state_.fill_zero(cl);
+    splat_.fill_zero(cl);
+    stats_.fill_zero(cl);
+    longest_run_.fill_zero(cl);
+    picks_.fill_zero(cl);
+}
+
+void MltRenderer::sample_starts() {
+    const std::uint32_t m = opt_.threads, iters = std::max(1u, opt_.burn_in_iters);
+    const std::uint32_t chains = this->chains();
+    ClBuffer lum(cl_, CL_MEM_READ_WRITE, plan_.bytes("luminance"));
+    ClBuffer scan(cl_, CL_MEM_READ_WRITE, plan_.bytes("scan"));
+    DeviceScan scanner(cl_, program_.p, m, sizeof(float));
+    std::vector<float> host(m);
+    double sum = 0, sum2 = 0;
+    cl_ulong omc_seed = derive_seed(opt_.seed, kPurposeOmc);
+    cl_ulong pick_seed = derive_seed(opt_.seed, kPurposePick);
+    std::uint32_t picked = 0;
+    for (std::uint32_t it = 0; it < iters; ++it) {
+        cl_uint first = it * m;
+        k_lum_.set_args(scene_.tris, scene_.nodes, scene_.mats, scene_.lights, ds_.frame, state_,
+                        omc_seed, first, cl_uint(m), lum, stats_);
+        k_lum_.run(cl_, m);
+        lum.read(cl_, host.data());
+        for (float y : host) {
+            sum += y;
+            sum2 += double(y) * y;
+        }
+        if (!opt_.burn_in) continue;
+        // Round it keeps its share of the m starts (the first m % iters rounds one more).
+        cl_uint count = chains / iters + (it < chains % iters ? 1u : 0u);
+        scanner.run(lum, scan, m);
+        k_pick_.set_args(scan, cl_uint(m), pick_seed, cl_uint(it), first, cl_uint(picked), count,
+                         picks_);
+        k_pick_.run(cl_, count);
+        picked += count;
+    }
+    if (!opt_.burn_in) {
+        // Fresh samples, numbered after those that estimated b.
+        std::vector<cl_uint> fresh(m);
+        for (std::uint32_t c = 0; c < m; ++c)
+            fresh[c] = iters * m + c;
+        picks_.write(cl_, fresh.data());
+    }
+    double n = double(m) * iters;
+    b_ = sum / n;
+    double var = n > 1 ? (sum2 / n - b_ * b_) * n / (n - 1) : 0;
+    b_rel_error_ = b_ > 0 ? std::sqrt(std::max(var, 0.0) / n) / b_ : 0;
+}
+
+void MltRenderer::prepare() {
+    Clock::time_point t0 = Clock::now();
+    sample_starts();
+    init_chains();
+    prepared_ = true;
+    prepare_seconds_ += seconds_since(t0);
+}
+
+void MltRenderer::init_chains() {
+    cl_ulong seed = derive_seed(opt_.seed, kPurposeOmc);
+    k_init_.set_args(scene_.tris, scene_.nodes, scene_.mats, scene_.lights, ds_.frame, state_,
+                     values_, cl_uint(chains()), seed, picks_, stats_);
+    k_init_.run(cl_, chains());
+}
+
+void MltRenderer::step(std::uint32_t n) {
+    cl_ulong seed = derive_seed(opt_.seed, kPurposeStep);
+    double p = std::clamp(double(opt_.large_step), 0.0, 1.0);
+    cl_uint threshold = p >= 1.0 ? 0xFFFFFFFFu : cl_uint(p * 4294967296.0);
+    Clock::time_point t0 = Clock::now();
+    for (std::uint32_t i = 0; i < n; ++i) {
+        cl_uint iteration = ++iterations_;
+        k_step_.set_args(scene_.tris, scene_.nodes, scene_.mats, scene_.lights, ds_.frame, state_,
+                         values_, cl_uint(opt_.threads), cl_uint(opt_.proposals), seed, iteration,
+                         threshold, splat_, stats_, cl_uint(opt_.stuck_run), longest_run_);
+        k_step_.enqueue(cl_, opt_.threads);
+    }
+    cl_.finish("kernel mlt_step over " + std::to_string(opt_.threads) + " threads");
+    step_seconds_ += seconds_since(t0);
+}
+
+std::uint32_t MltRenderer::state_bytes_per_chain() const {
+    return ds_.layout.chain_bytes(opt_.float32_states);
+}
+
+MltStats MltRenderer::stats() const {
+    cl_ulong s[MLT_STAT_COUNT];
+    stats_.read(cl_, s);
+    MltStats out;
+    out.mutations = std::uint64_t(iterations_) * opt_.threads;
+    out.accepted = s[MLT_STAT_ACCEPTED];
+    out.large = s[MLT_STAT_LARGE];
+    out.nonfinite = s[MLT_STAT_NONFINITE];
+    out.rays = s[MLT_STAT_RAYS];
+    out.stuck = s[MLT_STAT_STUCK];
+    cl_uint longest = 0;
+    longest_run_.read(cl_, &longest);
+    out.longest_run = longest;
+    return out;
+}
+
+std::vector<std::string> MltRenderer::notes() const {
+    std::vector<std::string> out;
+    MltStats s = stats();
+    if (std::uint64_t n = s.nonfinite)
+        out.push_back(
+            std::to_string(n) +
+            " samples had a NaN or infinite radiance and were dropped (counted as black)");
+    if (prepared_ && b_ == 0)
+        out.push_back("no OMC sample of " +
+                      std::to_string(std::uint64_t(opt_.threads) * opt_.burn_in_iters) +
+                      " carried light (b = 0): the image is black; is the scene lit?");
+    else if (prepared_ && b_rel_error_ > kMaxBRelError) {
+        char buf[240];
+        std::snprintf(buf, sizeof buf,
+                      "few OMC samples carried light: b = %.5g has a relative standard error "
+                      "of %.2f%% (above %.0f%%), and the whole image scales with it; more "
+                      "--burn-in-iters or --threads narrow it",
+                      b_, 100.0 * b_rel_error_, 100.0 * kMaxBRelError);
+        out.push_back(buf);
+    }
+    if (s.stuck > 0) {
+        char buf[320];
+        std::snprintf(buf, sizeof buf,
+                      "%llu of %u chains (%.2f%%) stayed on one path for %u steps or more "
+                      "(longest %u): expect bright blotches where they stayed, fading as "
+                      "the render goes on (doc/stability.md)",
+                      static_cast<unsigned long long>(s.stuck), chains(),
+                      100.0 * double(s.stuck) / chains(), opt_.stuck_run, s.longest_run);
+        out.push_back(buf);
+    }
+    if (prepared_ && b_ > 0 && iterations_ == 0)
+        out.push_back("no MLT step ran in the time given: burn-in took " +
+                      std::to_string(prepare_seconds_) +
+                      " s; give more time or fewer --burn-in-iters");
+    return out;
+}
+
+std::string MltRenderer::summary(double) const {
+    MltStats s = stats();
+    double per_s = step_seconds_ > 0 ? 1e-6 / step_seconds_ : 0.0;
+    double per_mutation = s.mutations ? 100.0 / double(s.mutations) : 0.0;
+    char buf[480];
+    std::snprintf(buf, sizeof buf,
+                  "%u chains x %u proposals x %u steps (state %u B/chain), %.3f M mutations/s, "
+                  "%.3f M rays/s (steps only; b and chain start %.2f s), acceptance %.1f%%, "
+                  "large steps %.1f%%, b = %.5g (+-%.2f%%), %llu non-finite dropped, "
+                  "longest run of rejections %u, %llu chains stuck (%u in a row)",
+                  chains(), opt_.proposals, iterations_, state_bytes_per_chain(),
+                  double(s.mutations) * per_s, double(s.rays) * per_s, prepare_seconds_,
+                  double(s.accepted) * per_mutation, double(s.large) * per_mutation, b_,
+                  100.0 * b_rel_error_, static_cast<unsigned long long>(s.nonfinite), s.longest_run,
+                  static_cast<unsigned long long>(s.stuck), opt_.stuck_run);
+    return buf;
+}
+
+Image MltRenderer::image() const {
+    std::vector<cl_ulong> acc(pixels() * 3);
+    splat_.read(cl_, acc.data());
+    Image img(int(ds_.frame.width), int(ds_.frame.height));
+    double mutations = double(iterations_) * opt_.threads;
+    if (mutations == 0) return img;
+    double scale = b_ * double(pixels()) / mutations / double(1u << SPLAT_FRAC_BITS);
+    for (std::size_t i = 0; i < acc.size(); ++i)
+        img.rgb[i] = float(double(acc[i]) * scale);
+    return img;
+}
+
+} // namespace smallmlt

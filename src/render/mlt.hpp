@@ -1,0 +1,115 @@
+// Primary-sample-space MLT on the device (cl/kernels_mlt.cl): N chains, one
+// per work-item, with packed states and lazy proposals. The host estimates
+// the normalization b, starts the chains, runs steps and assembles the image.
+#pragma once
+#include "device/memory_plan.hpp"
+#include "device/ocl.hpp"
+#include "device/scene_buffers.hpp"
+#include "image/image.hpp"
+#include "render/integrator.hpp"
+#include "scene/device_scene.hpp"
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace smallmlt {
+
+constexpr std::uint32_t kDefaultStuckRun = 1000;
+
+struct MltOptions {
+    std::uint32_t threads = 1u << 16; // N work-items
+    std::uint32_t proposals = 1;      // K proposals per chain: N / K chains (a power of two <= 64)
+    float large_step = 0.5f;          // probability that a step is large
+    std::uint64_t seed = 1;
+    // Burn-in by OMC (Frolov and Galaktionov, section 3.1): burn_in_iters
+    // rounds of one OMC sample per chain; each round keeps chains / iters of
+    // them in proportion to luminance as chain starts. All chains x iters
+    // samples estimate b. Without burn-in, chains start at fresh OMC samples.
+    bool burn_in = true;
+    std::uint32_t burn_in_iters = 32; // chosen by measurement (doc/RESULTS.md)
+    bool float32_states = false;      // unpacked float32 states (reference build)
+    // A chain that rejects this many proposals in a row counts as stuck
+    // (reported, not acted on; doc/stability.md).
+    std::uint32_t stuck_run = kDefaultStuckRun;
+    // The file that defines eval_state: cl/eval_path.cl renders the scene;
+    // the sampler tests use cl/eval_target.cl, a known 2D target.
+    std::string evaluator = "cl/eval_path.cl";
+    std::vector<std::string> extra_files; // appended to the program (test probes)
+};
+
+// Throws InputError naming the device if it lacks what MLT needs (64-bit
+// atomics for the splats); path tracing needs none of it.
+void mlt_require_device(const DeviceInfo& d);
+
+// Kernel files of the MLT program, in build order.
+std::vector<std::string> mlt_program_files(const MltOptions& opt);
+
+// Above this relative standard error of b, a render says so (b scales the
+// whole image; its error is not reduced by running the chains longer).
+constexpr double kMaxBRelError = 0.01;
+
+struct MltStats {
+    std::uint64_t mutations = 0, accepted = 0, large = 0, nonfinite = 0, rays = 0;
+    std::uint64_t stuck = 0;       // chains that rejected stuck_run proposals in a row
+    std::uint32_t longest_run = 0; // most consecutive rejections of any chain
+};
+
+class MltRenderer : public Integrator {
+  public:
+    MltRenderer(const ClContext& cl, const DeviceScene& ds, const MltOptions& opt);
+
+    void prepare() override;
+    void advance(std::uint32_t units) override { step(units); }
+    std::uint64_t units_for_spp(std::uint32_t spp) const override {
+        return (std::uint64_t(spp) * pixels() + opt_.threads - 1) / opt_.threads;
+    }
+    double spp_done() const override {
+        return double(iterations_) * opt_.threads / double(pixels());
+    }
+    std::string summary(double seconds) const override;
+    // No OMC sample carried light: the image is black whatever the chains do.
+    bool finished() const override { return prepared_ && b_ == 0; }
+    std::vector<std::string> notes() const override;
+
+    // Runs the OMC samples: b = their mean luminance (with its relative
+    // standard error), and the chains' starting samples (burn-in or fresh).
+    void sample_starts();
+    double b() const { return b_; }
+    double b_rel_error() const { return b_rel_error_; }
+
+    // Starts every chain at its starting sample's path.
+    void init_chains();
+    // n Metropolis steps of every chain.
+    void step(std::uint32_t n);
+
+    std::uint32_t iterations() const { return iterations_; }
+    std::uint32_t chains() const { return opt_.threads / opt_.proposals; }
+    std::uint64_t pixels() const { return std::uint64_t(ds_.frame.width) * ds_.frame.height; }
+    MltStats stats() const;
+    // Packed numbers plus the ChainValue (F(x), live bounces).
+    std::uint32_t state_bytes_per_chain() const;
+    // b * splats * pixels / mutations.
+    Image image() const override;
+
+    // For tests: the raw buffers.
+    const ClBuffer& state() const { return state_; }
+    const ClBuffer& values() const { return values_; }
+    cl_program program() const { return program_.p; }
+
+  private:
+    const ClContext& cl_;
+    const DeviceScene& ds_;
+    MltOptions opt_;
+    MemoryPlan plan_; // sizes of every buffer below (src/memory_plan.cpp)
+    ClProgram program_;
+    ClKernel k_lum_, k_init_, k_step_, k_pick_;
+    SceneBuffers scene_;
+    ClBuffer state_, values_, splat_, stats_, longest_run_, picks_;
+    double b_ = 0, b_rel_error_ = 0;
+    bool prepared_ = false;
+    std::uint32_t iterations_ = 0;
+    double prepare_seconds_ = 0, step_seconds_ = 0; // wall time of b + chain start, of steps
+};
+
+} // namespace smallmlt

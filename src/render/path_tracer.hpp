@@ -1,0 +1,51 @@
+// Ordinary Monte Carlo (path tracing) on the device: owns the scene buffers,
+// the per-pixel accumulators and the pt_render kernel (cl/kernels_pt.cl).
+#pragma once
+#include "device/memory_plan.hpp"
+#include "device/ocl.hpp"
+#include "device/scene_buffers.hpp"
+#include "image/image.hpp"
+#include "render/integrator.hpp"
+#include "scene/device_scene.hpp"
+
+#include <cstdint>
+#include <memory>
+
+namespace smallmlt {
+
+// Kernel files of the path-tracing program, in build order.
+const std::vector<std::string>& pt_program_files();
+
+class PathTracer : public Integrator {
+  public:
+    PathTracer(const ClContext& cl, const DeviceScene& ds, std::uint64_t seed);
+
+    void advance(std::uint32_t units) override { add_samples(units); }
+    std::uint64_t units_for_spp(std::uint32_t spp) const override { return spp; }
+    double spp_done() const override { return spp_; }
+    std::string summary(double seconds) const override;
+
+    // Adds n samples per pixel (numbered spp() .. spp() + n - 1).
+    void add_samples(std::uint32_t n);
+    std::uint32_t spp() const { return spp_; }
+    std::uint64_t rays() const;
+    // Samples dropped because their radiance was NaN or infinite.
+    std::uint64_t nonfinite() const;
+    std::vector<std::string> notes() const override;
+    std::uint64_t pixels() const { return std::uint64_t(ds_.frame.width) * ds_.frame.height; }
+
+    Image image() const; // mean radiance per pixel
+
+  private:
+    const ClContext& cl_;
+    const DeviceScene& ds_;
+    std::uint64_t seed_;
+    std::uint32_t spp_ = 0;
+    MemoryPlan plan_; // sizes of the buffers below (src/memory_plan.cpp)
+    ClProgram program_;
+    ClKernel kernel_;
+    SceneBuffers scene_;
+    ClBuffer accum_, ray_count_;
+};
+
+} // namespace smallmlt

@@ -1,0 +1,75 @@
+#include "render/render_loop.hpp"
+
+#include "base/clock.hpp"
+#include "base/interrupt.hpp"
+
+#include <algorithm>
+#include <string>
+
+namespace smallmlt {
+
+namespace {
+
+constexpr std::uint32_t kMaxPassUnits = 4096;
+
+// Render time: wall time since the start less the time spent measuring.
+class RenderClock {
+  public:
+    double now() const { return wall() - paused_s_; }
+    template <class F> void pause_for(F&& f) {
+        double t = wall();
+        f();
+        paused_s_ += wall() - t;
+    }
+
+  private:
+    double wall() const { return seconds_since(t0_); }
+    Clock::time_point t0_ = Clock::now();
+    double paused_s_ = 0;
+};
+
+void show_progress(Progress& progress, const Integrator& m, const LoopLimits& limits,
+                   std::uint64_t done, std::uint64_t target, double render_s) {
+    std::string spp = std::to_string(int(m.spp_done()));
+    if (limits.spp)
+        progress.update(double(done) / double(target),
+                        spp + "/" + std::to_string(*limits.spp) + " per pixel");
+    else
+        progress.update(render_s / *limits.time_s, spp + " per pixel");
+}
+
+} // namespace
+
+LoopResult render_loop(Integrator& m, const LoopLimits& limits, ConvergenceLog* log,
+                       Progress& progress) {
+    RenderClock clock;
+    m.prepare();
+    std::uint64_t target = limits.spp ? m.units_for_spp(*limits.spp) : 0, done = 0;
+    std::uint32_t batch = 1;
+    LoopResult r;
+    for (;;) {
+        double now = clock.now();
+        if (log && log->due(now) && m.spp_done() > 0)
+            clock.pause_for([&] { log->record(now, m.spp_done(), m.image()); });
+        if (m.finished() || (limits.spp ? done >= target : now >= *limits.time_s)) break;
+        if (interrupt_requested()) {
+            r.interrupted = true;
+            break;
+        }
+        show_progress(progress, m, limits, done, target, now);
+        std::uint64_t n = limits.spp ? std::min<std::uint64_t>(batch, target - done) : batch;
+        double t = clock.now();
+        m.advance(std::uint32_t(n));
+        done += n;
+        double per_unit = std::max(clock.now() - t, 1e-4) / double(n);
+        double next = limits.pass_s / per_unit;
+        if (limits.time_s)
+            next = std::min(next, std::max(1.0, (*limits.time_s - clock.now()) / per_unit));
+        batch = std::uint32_t(std::clamp(next, 1.0, double(kMaxPassUnits)));
+    }
+    r.render_s = clock.now();
+    progress.finish();
+    return r;
+}
+
+} // namespace smallmlt

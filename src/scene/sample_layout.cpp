@@ -1,0 +1,88 @@
+#include "scene/sample_layout.hpp"
+
+#include "shared_types.h"
+
+#include <sstream>
+
+namespace smallmlt {
+
+const char* slot_name(Slot s) {
+    static const char* names[kSlotCount] = {"BSDF_U",     "BSDF_V",  "LIGHT_U", "LIGHT_V",
+                                            "LIGHT_PICK", "FRESNEL", "RR"};
+    return names[s];
+}
+
+int light_pick_bits(std::uint32_t num_lights) {
+    int bits = 8;
+    while (bits < kMaxLightPickBits && (std::uint64_t(1) << (bits - 8)) < num_lights)
+        ++bits;
+    return bits < kLowBits ? kLowBits : bits;
+}
+
+SampleLayout make_layout(const SceneFeatures& f) {
+    bool want[kSlotCount] = {};
+    bool nee = f.diffuse && f.num_lights > 0;
+    want[kBsdfU] = want[kBsdfV] = f.diffuse;
+    want[kLightU] = want[kLightV] = nee;
+    want[kLightPick] = nee && f.num_lights > 1;
+    want[kFresnel] = f.dielectric;
+    want[kRoulette] = f.depth > kRouletteStart;
+    int width[kSlotCount] = {
+        kHighBits, kHighBits, kHighBits, kHighBits, light_pick_bits(f.num_lights),
+        kLowBits,  kLowBits};
+    SampleLayout l;
+    l.depth = f.depth;
+    l.features = f;
+    for (int s = 0; s < kSlotCount; ++s) {
+        l.index[s] = want[s] ? l.bounce_dims++ : -1;
+        l.bits[s] = want[s] ? width[s] : 0;
+        l.bounce_bits += l.bits[s];
+    }
+    return l;
+}
+
+std::uint32_t SampleLayout::chain_words(bool float32_states) const {
+    if (float32_states) return static_cast<std::uint32_t>(vector_dims());
+    return static_cast<std::uint32_t>((vector_bits() + 31) / 32);
+}
+
+std::uint32_t SampleLayout::chain_bytes(bool float32_states) const {
+    return chain_words(float32_states) * 4u + static_cast<std::uint32_t>(sizeof(ChainValue));
+}
+
+std::string SampleLayout::defines() const {
+    std::ostringstream d;
+    d << "#define LAYOUT_CAMERA_DIMS " << kCameraDims << "u\n";
+    d << "#define LAYOUT_BOUNCE_DIMS " << bounce_dims << "u\n";
+    d << "#define LAYOUT_HAS_DIFFUSE " << (features.diffuse ? 1 : 0) << "\n";
+    d << "#define LAYOUT_HAS_MIRROR " << (features.mirror ? 1 : 0) << "\n";
+    d << "#define LAYOUT_HAS_DIELECTRIC " << (features.dielectric ? 1 : 0) << "\n";
+    d << "#define LAYOUT_HAS_NEE " << (has(kLightU) ? 1 : 0) << "\n";
+    d << "#define LAYOUT_CAMERA_BITS " << kHighBits << "u\n";
+    d << "#define LAYOUT_BOUNCE_BITS " << bounce_bits << "u\n";
+    d << "#define RR_START_BOUNCE " << kRouletteStart << "u\n";
+    for (int s = 0; s < kSlotCount; ++s) {
+        const char* name = slot_name(static_cast<Slot>(s));
+        d << "#define SLOT_" << name << " " << index[s] << "\n";
+        d << "#define SLOT_" << name << "_BITS " << bits[s] << "u\n";
+    }
+    // Per-slot bits and bit offsets within a bounce, in slot-index order.
+    std::ostringstream slot_bits, slot_offset;
+    int offset = 0;
+    for (int i = 0; i < bounce_dims; ++i)
+        for (int s = 0; s < kSlotCount; ++s)
+            if (index[s] == i) {
+                slot_bits << (i ? ", " : "") << bits[s] << "u";
+                slot_offset << (i ? ", " : "") << offset << "u";
+                offset += bits[s];
+            }
+    if (bounce_dims > 0) {
+        d << "__constant uint layout_slot_bits[" << bounce_dims << "] = {" << slot_bits.str()
+          << "};\n";
+        d << "__constant uint layout_slot_offset[" << bounce_dims << "] = {" << slot_offset.str()
+          << "};\n";
+    }
+    return d.str();
+}
+
+} // namespace smallmlt

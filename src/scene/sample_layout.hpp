@@ -1,0 +1,54 @@
+// The per-scene layout of a path's primary-sample numbers: which slots each
+// bounce has and how many bits each is stored in. "Model no more than a scene
+// needs": a slot exists only if the scene's materials and lights use it.
+#pragma once
+#include <cstdint>
+#include <string>
+
+namespace smallmlt {
+
+// What a scene's paths can do, which decides the layout.
+struct SceneFeatures {
+    bool diffuse = false, mirror = false, dielectric = false;
+    std::uint32_t num_lights = 0; // emissive triangles
+    int depth = 0;
+};
+
+enum Slot : int { kBsdfU, kBsdfV, kLightU, kLightV, kLightPick, kFresnel, kRoulette, kSlotCount };
+
+constexpr int kHighBits = 24;     // continuous slots (BSDF and light sampling)
+constexpr int kLowBits = 16;      // discrete choices
+constexpr int kCameraDims = 2;    // film position, kHighBits each
+constexpr int kRouletteStart = 3; // first bounce where Russian roulette may end a path
+constexpr int kMaxLightPickBits = 24;
+
+struct SampleLayout {
+    int index[kSlotCount]; // position within a bounce, -1 if absent; high-precision first
+    int bits[kSlotCount];  // stored bits (0 if absent)
+    int bounce_dims = 0;   // numbers per bounce
+    int bounce_bits = 0;   // stored bits per bounce
+    int depth = 0;
+    SceneFeatures features;
+
+    bool has(Slot s) const { return index[s] >= 0; }
+    int vector_dims() const { return kCameraDims + depth * bounce_dims; }
+    int vector_bits() const { return kCameraDims * kHighBits + depth * bounce_bits; }
+    // A chain's state (cl/pss.cl): 32-bit words of its numbers, packed at
+    // their slots' precision or one float32 per number (the reference
+    // build), and the bytes it keeps in all, words and ChainValue.
+    std::uint32_t chain_words(bool float32_states) const;
+    std::uint32_t chain_bytes(bool float32_states) const;
+    // OpenCL preprocessor definitions (LAYOUT_*, SLOT_*) for the kernels:
+    // the layout and which material models the kernels compile in.
+    std::string defines() const;
+};
+
+const char* slot_name(Slot s);
+
+// Width of the light-pick slot for n lights: 16 bits, widened so that each
+// light gets at least 2^8 grid points on average, at most 24 bits.
+int light_pick_bits(std::uint32_t num_lights);
+
+SampleLayout make_layout(const SceneFeatures& f);
+
+} // namespace smallmlt

@@ -1,0 +1,49 @@
+// A scene as loaded from a .scene file (format: doc/scene-format.md):
+// film, camera, depth and the triangles and materials of its meshes.
+#pragma once
+#include "base/vec3.hpp"
+#include "shared_types.h"
+
+#include <set>
+#include <string>
+#include <vector>
+
+namespace smallmlt {
+
+struct Camera {
+    Vec3 eye, target, up{0, 1, 0};
+    float fov_y_deg = 40;
+};
+
+struct SceneTriangle {
+    Vec3 v[3];
+    std::uint32_t material;
+};
+
+struct Scene {
+    int width = 512, height = 512;
+    int depth = 8;
+    Camera camera;
+    std::vector<SceneTriangle> triangles;
+    std::vector<Material> materials;
+    std::vector<std::string> material_names;
+    std::set<std::string> mtl_files; // MTL files read so far (meshes may share one)
+    int dropped_degenerate = 0;      // zero-area triangles left out at load
+};
+
+constexpr int kMaxDepth = 64;
+constexpr int kMaxFilmSide = 16384;
+
+// Parses a .scene file and the meshes it names. Throws InputError naming the
+// file and line of the first problem.
+Scene load_scene(const std::string& path);
+
+// Reads the triangles of an OBJ file and the materials of the MTL files it
+// names into `scene` (src/obj_loader.cpp). `where` is "scene:line" of the
+// mesh directive, for messages about the file as a whole.
+void load_obj(const std::string& obj_path, const std::string& where, Scene& scene);
+
+// Materials of one MTL file, appended to scene.materials/material_names.
+void load_mtl(const std::string& mtl_path, Scene& scene);
+
+} // namespace smallmlt
