@@ -30,7 +30,7 @@ TEST_OBJ   := $(TEST_SRC:test/%.cpp=$(BUILD)/obj/test/%.o)
 BIN        := $(BUILD)/smallmlt
 TEST_BIN   := $(BUILD)/smallmlt_tests
 
-.PHONY: all deps deps-fuzz run test bench bench-quick fuzz format clean
+.PHONY: all deps deps-fuzz run test bench bench-quick mutants fuzz format clean
 
 all: $(BIN)
 
@@ -85,6 +85,11 @@ bench: deps
 bench-quick: deps
 	$(MAKE) $(BIN)
 	QUICK=1 sh bench/all.sh $(BIN)
+
+# Applies each deliberate bug of test/mutants.txt in a copy of the project
+# (build/mutants/tree) and checks that some test fails; not part of `make test`.
+mutants: deps
+	sh test/mutants.sh
 
 # Fuzzes the scene, OBJ and MTL loaders for FUZZ_SECONDS (default 60) from
 # the seed corpus in test/fuzz/corpus; findings are written as crash-* files.

@@ -1,0 +1,65 @@
+/* Probe kernels for the chi-square tests of the sampling routines
+ * (test/test_sampling.cpp): each draws n samples from stream numbers
+ * rng_key(seed, i, 0) and reports them for the host to histogram. */
+
+inline float probe_unit(ulong key, uint dim) {
+    return (float)(rng_u32(key, dim) >> 8) * (1.0f / 16777216.0f);
+}
+
+/* Points that light_sample_tri picks on triangle `tri`, seen from a point
+ * one unit in front of its centroid: out[i] = the point (xyz). */
+__kernel void probe_light_points(__global const Triangle* tris, __global const Material* mats,
+                                 const uint tri, const ulong seed, const uint n,
+                                 __global float4* out) {
+    uint i = get_global_id(0);
+    if (i >= n) return;
+    const __global Triangle* t = &tris[tri];
+    float3 c = geo_load3(t->v0) + (geo_load3(t->e1) + geo_load3(t->e2)) * (1.0f / 3.0f);
+    float3 x = c + normalize(geo_tri_normal(t));
+    ulong key = rng_key(seed, i, 0u);
+    LightSample ls;
+    bool ok = light_sample_tri(t, mats, x, probe_unit(key, 0u), probe_unit(key, 1u), &ls);
+    out[i] = ok ? (float4)(x + ls.wi * ls.dist, 1.0f) : (float4)(0.0f);
+}
+
+/* Lights that light_pick chooses for uniform `bits`-wide numbers. */
+__kernel void probe_light_picks(__global const LightEntry* lights, const uint num_lights,
+                                const uint bits, const ulong seed, const uint n,
+                                __global uint* out) {
+    uint i = get_global_id(0);
+    if (i >= n) return;
+    uint u = rng_u32(rng_key(seed, i, 0u), 0u) >> (32u - bits);
+    out[i] = light_pick(lights, num_lights, u);
+}
+
+/* Directions of bsdf_sample_diffuse around normal n (xyz), with its pdf_w
+ * in w. */
+__kernel void probe_diffuse_dirs(const float4 n, const ulong seed, const uint n_samples,
+                                 __global float4* out) {
+    uint i = get_global_id(0);
+    if (i >= n_samples) return;
+    ulong key = rng_key(seed, i, 0u);
+    Material m;
+    m.kd[0] = m.kd[1] = m.kd[2] = 0.5f;
+    BsdfSample s =
+        bsdf_sample_diffuse(&m, normalize(n.xyz), probe_unit(key, 0u), probe_unit(key, 1u));
+    out[i] = (float4)(s.wi, s.pdf_w);
+}
+
+/* Reflections (1) or refractions (0) that bsdf_sample_dielectric chooses
+ * for an incoming direction at cosine cos_o to the normal (0, 0, 1), with a
+ * choice number of `bits` bits; the weight goes to weights[i]. */
+__kernel void probe_dielectric_choice(const float cos_o, const float ior, const uint bits,
+                                      const ulong seed, const uint n, __global uint* reflected,
+                                      __global float* weights) {
+    uint i = get_global_id(0);
+    if (i >= n) return;
+    Material m;
+    m.ior = ior;
+    float3 nrm = (float3)(0.0f, 0.0f, 1.0f);
+    float3 wo = (float3)(sqrt(fmax(0.0f, 1.0f - cos_o * cos_o)), 0.0f, cos_o);
+    float u = layout_unit(rng_u32(rng_key(seed, i, 0u), 0u) >> (32u - bits), bits);
+    BsdfSample s = bsdf_sample_dielectric(&m, wo, nrm, u, bits);
+    reflected[i] = dot(s.wi, nrm) * cos_o > 0.0f ? 1u : 0u;
+    weights[i] = s.weight.x;
+}

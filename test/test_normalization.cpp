@@ -1,0 +1,101 @@
+// The MLT image's scale: b, the mean luminance of the film that the OMC
+// samples of burn-in estimate, and the identity that ties the image to it.
+// These are the only tests where a mean is the quantity checked; where the
+// chains put light is checked image against image (test_render_blocks.cpp)
+// and state against a known target (test_chain_target.cpp).
+#include "image/image_metrics.hpp"
+#include "render/mlt.hpp"
+#include "test_support.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+using namespace smallmlt;
+
+namespace {
+
+double furnace_mean(int depth) {
+    double expected = 0;
+    for (int i = 0; i <= depth; ++i)
+        expected += std::pow(0.5, i);
+    return expected;
+}
+
+} // namespace
+
+// In the furnace every path carries about the same radiance, the sum of
+// 0.5^i over the bounces, so b is known in closed form and its standard
+// error is tiny (the renderer reports it: about 0.05% at depth 2 and 0.2% at
+// depth 4 here). b must lie within 4 of its standard errors plus 0.2% (the
+// float rounding of 2^18 paths) of the analytic mean: a b off by 1% or
+// estimated from the wrong samples fails it.
+TEST(BEstimate, FurnaceBIsTheAnalyticMean) {
+    for (int depth : {2, 4}) {
+        DeviceScene ds = prepare_scene(test::scene("furnace", 16, 16, depth));
+        MltOptions opt;
+        opt.threads = 8192;
+        opt.burn_in_iters = 32;
+        opt.seed = 5;
+        MltRenderer mlt(test::cl(), ds, opt);
+        mlt.sample_starts();
+        double want = furnace_mean(depth);
+        double tol = 4 * mlt.b_rel_error() + 0.002;
+        std::printf("furnace depth %d: b %.6f (+-%.3f%%), analytic %.6f\n", depth, mlt.b(),
+                    100 * mlt.b_rel_error(), want);
+        EXPECT_LT(mlt.b_rel_error(), 0.0025) << "b noisier than this test was designed for";
+        EXPECT_NEAR(mlt.b(), want, tol * want) << "depth " << depth;
+    }
+}
+
+// On a scene with real variance, b and the path-traced mean estimate the
+// same integral (the mean luminance over the film). z = (b - PT) / sqrt(se_b^2
+// + se_pt^2) must stay below 4 (two-sided 6e-5 per scene). se_pt is taken as
+// se_b scaled by sqrt(samples of b / samples of PT): both average the same
+// integrand, and PT's stratification by pixel only lowers its variance, so
+// this overstates se_pt. At 2^20 samples each, se is about 0.7% combined on
+// cornell: a b biased by 4% gives z > 4 with probability 0.9 (the furnace
+// test above is the sharp one).
+TEST(BEstimate, BMatchesThePathTracedMean) {
+    for (const char* name : {"cornell"}) {
+        DeviceScene ds = prepare_scene(test::scene(name, 32, 32));
+        MltOptions opt;
+        opt.threads = 16384;
+        opt.burn_in_iters = 64;
+        opt.seed = 9;
+        MltRenderer mlt(test::cl(), ds, opt);
+        mlt.sample_starts();
+        const std::uint32_t spp = 1024;
+        double pt = test::render_pt(ds, 31, spp).mean_luminance();
+        double n_b = double(opt.threads) * opt.burn_in_iters, n_pt = double(spp) * 32 * 32;
+        double se_b = mlt.b_rel_error() * mlt.b(), se_pt = se_b * std::sqrt(n_b / n_pt);
+        double z = (mlt.b() - pt) / std::sqrt(se_b * se_b + se_pt * se_pt);
+        std::printf("%s: b %.5f (+-%.2f%%), PT mean %.5f, z %.2f\n", name, mlt.b(),
+                    100 * mlt.b_rel_error(), pt, z);
+        EXPECT_LT(std::fabs(z), 4.0) << name;
+    }
+}
+
+// Every step's splats add up to the step's work-items in luminance (a
+// proposal splats a F(y)/I(y), the chain's state (K - sum a) F(x)/I(x)), so
+// the image's mean luminance is b exactly, up to the fixed-point rounding of
+// the splats (below 1e-6 relative). A wrong stay or proposal weight breaks
+// the sum. Checked at K = 1 and K = 4. Only with burn-in: a chain started
+// without it may sit on a black path, where F(x)/I(x) is undefined and its
+// stay weight splats nothing (the startup bias of doc/stability.md).
+TEST(BEstimate, ImageMeanIsBByConstruction) {
+    DeviceScene ds = prepare_scene(test::scene("cornell-water", 24, 24));
+    for (std::uint32_t k : {1u, 4u}) {
+        MltOptions opt;
+        opt.threads = 2048;
+        opt.proposals = k;
+        opt.burn_in_iters = 4;
+        opt.large_step = 0.1f;
+        opt.seed = 3 + k;
+        MltRenderer mlt(test::cl(), ds, opt);
+        mlt.prepare();
+        mlt.step(16);
+        double mean = mlt.image().mean_luminance();
+        EXPECT_NEAR(mean, mlt.b(), 1e-5 * mlt.b()) << "K " << k;
+    }
+}
