@@ -35,6 +35,17 @@ TEST(OpenCl, BuildFailurePrintsTheLogWithFileAndLine) {
     EXPECT_NE(msg.find("cl/shared_types.h:"), std::string::npos) << msg;
 }
 
+// Compilers that ignore #line (NVIDIA's names every line "<kernel>:N") get
+// their line numbers mapped back to the embedded file and its own line.
+TEST(OpenCl, AnonymousLogLinesNameTheEmbeddedFile) {
+    std::vector<SourceStart> starts = {{"cl/shared_types.h", 4}, {"cl/rng.cl", 120}};
+    EXPECT_EQ(cl_name_log_lines("<kernel>:83:5: error: x\n<kernel>:121:2: note\n<kernel>:2:1: w "
+                                "<kernel>:zz <kernel>:7",
+                                starts),
+              "cl/shared_types.h:80:5: error: x\ncl/rng.cl:2:2: note\n(defines):2:1: w "
+              "<kernel>:zz <kernel>:7");
+}
+
 TEST(OpenCl, RefusedLaunchNamesKernelAndSizes) {
     ClProgram program(test::cl().build(
         {"cl/shared_types.h", "cl/geometry.cl", "cl/bvh.cl", "cl/kernels_probe.cl"}, ""));

@@ -3,6 +3,9 @@
 #include "base/error.hpp"
 #include "device/kernel_sources.hpp"
 
+#include <algorithm>
+#include <cctype>
+#include <cstdlib>
 #include <sstream>
 
 namespace smallmlt {
@@ -168,11 +171,39 @@ ClContext::~ClContext() {
     if (ctx_) clReleaseContext(ctx_);
 }
 
+std::string cl_name_log_lines(const std::string& log, const std::vector<SourceStart>& starts) {
+    static const std::string kAnon = "<kernel>:";
+    std::string out;
+    std::size_t pos = 0;
+    for (std::size_t at; (at = log.find(kAnon, pos)) != std::string::npos;) {
+        std::size_t digits = at + kAnon.size(), end = digits;
+        while (end < log.size() && std::isdigit(static_cast<unsigned char>(log[end])))
+            ++end;
+        out += log.substr(pos, at - pos);
+        pos = end;
+        if (end == digits || end == log.size() || log[end] != ':') {
+            out += log.substr(at, end - at);
+            continue;
+        }
+        int line = std::atoi(log.c_str() + digits);
+        const SourceStart* in = nullptr;
+        for (const SourceStart& s : starts)
+            if (s.first_line <= line) in = &s;
+        out += in ? in->file + ":" + std::to_string(line - in->first_line + 1)
+                  : "(defines):" + std::to_string(line);
+    }
+    return out + log.substr(pos);
+}
+
 cl_program ClContext::build(const std::vector<std::string>& files,
                             const std::string& defines) const {
     std::string src = defines;
-    for (const std::string& f : files)
-        src += "#line 1 \"" + f + "\"\n" + std::string(kernel_source(f)) + "\n";
+    std::vector<SourceStart> starts;
+    for (const std::string& f : files) {
+        src += "#line 1 \"" + f + "\"\n";
+        starts.push_back({f, int(std::count(src.begin(), src.end(), '\n')) + 1});
+        src += std::string(kernel_source(f)) + "\n";
+    }
     const char* text = src.c_str();
     cl_int err = CL_SUCCESS;
     cl_program prog = clCreateProgramWithSource(ctx_, 1, &text, nullptr, &err);
@@ -185,7 +216,7 @@ cl_program ClContext::build(const std::vector<std::string>& files,
         clGetProgramBuildInfo(prog, info_.id, CL_PROGRAM_BUILD_LOG, n, log.data(), nullptr);
         clReleaseProgram(prog);
         throw InputError(std::string("kernel build failed (") + cl_error_name(err) + ") on " +
-                         info_.name + ":\n" + log);
+                         info_.name + ":\n" + cl_name_log_lines(log, starts));
     }
     return prog;
 }

@@ -15,6 +15,16 @@ const char* cl_error_name(cl_int err);
 // Throws InputError "file:line: what failed: CL_ERROR_NAME".
 void cl_check(cl_int err, const char* what, const char* file, int line);
 
+// Where an embedded file starts in a program's joined source (1-based line).
+struct SourceStart {
+    std::string file;
+    int first_line;
+};
+
+// A build log with "<kernel>:N:" (compilers that ignore #line, such as
+// NVIDIA's) rewritten as "cl/file.cl:M:", M the line within that file.
+std::string cl_name_log_lines(const std::string& log, const std::vector<SourceStart>& starts);
+
 #define CL_CHECK(call) ::smallmlt::cl_check((call), #call, __FILE__, __LINE__)
 
 struct DeviceInfo {
