@@ -1,8 +1,8 @@
 /* Burn-in by ordinary Monte Carlo (Frolov and Galaktionov, section 3.1): of
  * the M OMC samples of one iteration, keep picks chosen with probability
  * proportional to their luminance, by binary search in the inclusive prefix
- * sum of the luminances (scan.cl). A kept sample is kept as its number s: the
- * key rng_key(seed, s, 0) regenerates its path. */
+ * sum of the luminances (scan.cl). A kept sample is kept as its index i in
+ * the round: the key rng_key(round seed, i, 0) regenerates its path. */
 
 /* First i with scan[i] > u (scan non-decreasing, u < scan[n - 1]). */
 inline uint burnin_search(const __global float* scan, uint n, float u) {

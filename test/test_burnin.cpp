@@ -1,6 +1,7 @@
 // Burn-in by OMC: the device scan is a prefix sum, picks are proportional to
 // luminance, and chains that start where the light is remove most of the
 // startup bias.
+#include "base/rng.hpp"
 #include "device/scan.hpp"
 #include "image/image_metrics.hpp"
 #include "render/mlt.hpp"
@@ -8,8 +9,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
+#include <set>
 
 using namespace smallmlt;
 
@@ -159,6 +162,52 @@ TEST(BurnInPick, OnlyZerosPicksUniformly) {
     for (int c : n)
         chi2 += (c - 200.0) * (c - 200.0) / 200.0;
     EXPECT_LT(chi2, chi2_critical_001(99));
+}
+
+// OMC sample keys are distinct across every round and thread the command
+// line allows (--threads up to 2^26, --burn-in-iters up to 2^16, plus the
+// round of fresh starts): a 32-bit sample number round x threads + index
+// repeats once it passes 2^32 (round 64 at 2^26 threads).
+TEST(OmcKeys, DistinctOverTheWholeCommandLineRange) {
+    const std::uint32_t max_threads = 1u << 26, max_rounds = (1u << 16) + 1;
+    std::vector<std::uint32_t> rounds = {
+        0, 1, 2, 63, 64, 65, 127, 128, 4096, max_rounds - 2, max_rounds - 1};
+    std::vector<std::uint32_t> indices = {
+        0, 1, 2, 1000, 65535, 65536, max_threads / 2, max_threads - 2, max_threads - 1};
+    std::mt19937 rng(4);
+    for (int k = 0; k < 200; ++k) {
+        rounds.push_back(rng() % max_rounds);
+        indices.push_back(rng() % max_threads);
+    }
+    std::vector<std::uint64_t> keys;
+    std::set<std::pair<std::uint32_t, std::uint32_t>> samples;
+    for (std::uint32_t r : rounds)
+        for (std::uint32_t i : indices)
+            if (samples.insert({r, i}).second) keys.push_back(omc_sample_key(77, r, i));
+    std::sort(keys.begin(), keys.end());
+    std::size_t repeats =
+        keys.size() - std::size_t(std::unique(keys.begin(), keys.end()) - keys.begin());
+    EXPECT_EQ(repeats, 0u) << "of " << samples.size() << " OMC samples, " << repeats
+                           << " repeat the key of another";
+    EXPECT_EQ(omc_round_seed(77, 0), derive_seed(77, 0));
+}
+
+// Every chain starts on the path its pick found lit: mlt_init regenerates,
+// from its round's seed and its index, the sample burnin_pick chose (rounds
+// with uneven shares: 1000 chains over 7 rounds).
+TEST(BurnIn, ChainsStartOnThePathsTheirPicksFound) {
+    DeviceScene ds = prepare_scene(test::scene("cornell-water", 32, 32));
+    MltOptions opt;
+    opt.threads = 1000;
+    opt.burn_in_iters = 7;
+    MltRenderer mlt(test::cl(), ds, opt);
+    mlt.prepare();
+    std::vector<ChainValue> v(opt.threads);
+    mlt.values().read(test::cl(), v.data());
+    int dark = 0;
+    for (const ChainValue& c : v)
+        dark += !(c.rgb[0] + c.rgb[1] + c.rgb[2] > 0);
+    EXPECT_EQ(dark, 0) << "chains started on unlit paths";
 }
 
 // The paper's Figure 1 in a test: early in a render (2 of a normal render's

@@ -38,7 +38,38 @@ const DeviceScene& require_atomics(const ClContext& cl, const DeviceScene& ds) {
     return ds;
 }
 
+// Queues `kernel` over global ids first .. first + count - 1 (a global
+// offset): whole work-groups of kDefaultWorkGroup, then one group of the rest.
+void enqueue_range(const ClContext& cl, const ClKernel& kernel, std::size_t first,
+                   std::size_t count) {
+    std::size_t whole = count / kDefaultWorkGroup * kDefaultWorkGroup;
+    std::size_t parts[2][3] = {{first, whole, kDefaultWorkGroup},
+                               {first + whole, count - whole, count - whole}};
+    for (const auto& [offset, items, local] : parts) {
+        if (items == 0) continue;
+        cl_int err = clEnqueueNDRangeKernel(cl.queue(), kernel.get(), 1, &offset, &items, &local, 0,
+                                            nullptr, nullptr);
+        if (err != CL_SUCCESS)
+            throw InputError("kernel " + kernel.name() + " over " + std::to_string(items) +
+                             " work-items from " + std::to_string(offset) + " (work-group " +
+                             std::to_string(local) + ") failed: " + cl_error_name(err));
+    }
+}
+
+// The kernels' rng_key (cl/rng.cl).
+std::uint64_t rng_key(std::uint64_t seed, std::uint32_t a, std::uint32_t b) {
+    return rng_mix64(seed + rng_mix64((std::uint64_t(a) << 32) | b));
+}
+
 } // namespace
+
+std::uint64_t omc_round_seed(std::uint64_t omc_seed, std::uint32_t round) {
+    return derive_seed(omc_seed, round);
+}
+
+std::uint64_t omc_sample_key(std::uint64_t omc_seed, std::uint32_t round, std::uint32_t index) {
+    return rng_key(omc_round_seed(omc_seed, round), index, 0);
+}
 
 void mlt_require_device(const DeviceInfo& d) {
     if (!d.int64_atomics)
@@ -88,10 +119,11 @@ void MltRenderer::sample_starts() {
     cl_ulong omc_seed = derive_seed(opt_.seed, kPurposeOmc);
     cl_ulong pick_seed = derive_seed(opt_.seed, kPurposePick);
     std::uint32_t picked = 0;
+    starts_.clear();
     for (std::uint32_t it = 0; it < iters; ++it) {
-        cl_uint first = it * m;
         k_lum_.set_args(scene_.tris, scene_.nodes, scene_.mats, scene_.lights, ds_.frame, state_,
-                        omc_seed, first, cl_uint(m), lum, stats_);
+                        cl_ulong(omc_round_seed(omc_seed, it)), cl_uint(0), cl_uint(m), lum,
+                        stats_);
         k_lum_.run(cl_, m);
         lum.read(cl_, host.data());
         for (float y : host) {
@@ -99,20 +131,23 @@ void MltRenderer::sample_starts() {
             sum2 += double(y) * y;
         }
         if (!opt_.burn_in) continue;
-        // Round it keeps its share of the m starts (the first m % iters rounds one more).
-        cl_uint count = chains / iters + (it < chains % iters ? 1u : 0u);
+        // Round it keeps its share of the starts (the first chains % iters rounds one more).
+        std::uint32_t count = chains / iters + (it < chains % iters ? 1u : 0u);
+        if (count == 0) continue;
         scanner.run(lum, scan, m);
-        k_pick_.set_args(scan, cl_uint(m), pick_seed, cl_uint(it), first, cl_uint(picked), count,
-                         picks_);
+        k_pick_.set_args(scan, cl_uint(m), pick_seed, cl_uint(it), cl_uint(0), cl_uint(picked),
+                         cl_uint(count), picks_);
         k_pick_.run(cl_, count);
+        starts_.push_back({it, picked, count});
         picked += count;
     }
     if (!opt_.burn_in) {
-        // Fresh samples, numbered after those that estimated b.
-        std::vector<cl_uint> fresh(m);
-        for (std::uint32_t c = 0; c < m; ++c)
-            fresh[c] = iters * m + c;
+        // Fresh samples: round iters, after those that estimated b.
+        std::vector<cl_uint> fresh(chains);
+        for (std::uint32_t c = 0; c < chains; ++c)
+            fresh[c] = c;
         picks_.write(cl_, fresh.data());
+        starts_.push_back({iters, 0, chains});
     }
     double n = double(m) * iters;
     b_ = sum / n;
@@ -129,10 +164,14 @@ void MltRenderer::prepare() {
 }
 
 void MltRenderer::init_chains() {
-    cl_ulong seed = derive_seed(opt_.seed, kPurposeOmc);
-    k_init_.set_args(scene_.tris, scene_.nodes, scene_.mats, scene_.lights, ds_.frame, state_,
-                     values_, cl_uint(chains()), seed, picks_, stats_);
-    k_init_.run(cl_, chains());
+    cl_ulong omc_seed = derive_seed(opt_.seed, kPurposeOmc);
+    for (const StartRange& r : starts_) {
+        k_init_.set_args(scene_.tris, scene_.nodes, scene_.mats, scene_.lights, ds_.frame, state_,
+                         values_, cl_uint(chains()), cl_ulong(omc_round_seed(omc_seed, r.round)),
+                         picks_, stats_);
+        enqueue_range(cl_, k_init_, r.first, r.count);
+    }
+    cl_.finish("kernel mlt_init over " + std::to_string(chains()) + " chains");
 }
 
 void MltRenderer::step(std::uint32_t n) {

@@ -45,6 +45,17 @@ void mlt_require_device(const DeviceInfo& d);
 // Kernel files of the MLT program, in build order.
 std::vector<std::string> mlt_program_files(const MltOptions& opt);
 
+// OMC samples of a render are numbered by (round, index): round r < T of
+// burn-in (T = --burn-in-iters) draws indices 0..N-1, and the fresh starts of
+// --burn-in none are round T. Sample (r, i) is the path of key
+// rng_key(omc_round_seed(omc_seed, r), i, 0) (cl/rng.cl), so keys stay
+// distinct however many rounds of however many threads run (a single 32-bit
+// number r * N + i would wrap at 2^32 and repeat samples), and mlt_init
+// regenerates a picked path from its round's seed and its index.
+std::uint64_t omc_round_seed(std::uint64_t omc_seed, std::uint32_t round);
+// The key of sample (round, index), as the kernels make it.
+std::uint64_t omc_sample_key(std::uint64_t omc_seed, std::uint32_t round, std::uint32_t index);
+
 // Above this relative standard error of b, a render says so (b scales the
 // whole image; its error is not reduced by running the chains longer).
 constexpr double kMaxBRelError = 0.01;
@@ -109,6 +120,11 @@ class MltRenderer : public Integrator {
     double b_ = 0, b_rel_error_ = 0;
     bool prepared_ = false;
     std::uint32_t iterations_ = 0;
+    // Chains [first, first + count) start at samples of round `round`.
+    struct StartRange {
+        std::uint32_t round, first, count;
+    };
+    std::vector<StartRange> starts_;
     double prepare_seconds_ = 0, step_seconds_ = 0; // wall time of b + chain start, of steps
 };
 
