@@ -71,6 +71,31 @@ std::uint64_t omc_sample_key(std::uint64_t omc_seed, std::uint32_t round, std::u
     return rng_key(omc_round_seed(omc_seed, round), index, 0);
 }
 
+int burnin_weight_exponent(double sum) {
+    if (!(sum > 0) || !std::isfinite(sum)) return 0;
+    int e;
+    std::frexp(sum, &e); // sum < 2^e
+    return 62 - e;
+}
+
+BurnInPicker::BurnInPicker(const ClContext& cl, cl_program program, std::uint32_t max_n)
+    : cl_(cl), scan_(cl, program, max_n, sizeof(cl_ulong)), weights_(program, "burnin_weights"),
+      pick_(program, "burnin_pick") {}
+
+void BurnInPicker::pick(const ClBuffer& lum, const std::vector<float>& host, std::uint32_t n,
+                        const ClBuffer& scan, std::uint64_t seed, std::uint32_t round,
+                        std::uint32_t first_pick, std::uint32_t count, const ClBuffer& picks) {
+    double sum = 0;
+    for (std::uint32_t i = 0; i < n; ++i)
+        if (std::isfinite(host[i])) sum += host[i];
+    weights_.set_args(lum, cl_uint(n), cl_int(burnin_weight_exponent(sum)), scan);
+    weights_.enqueue(cl_, n);
+    scan_.run(scan, scan, n); // in place
+    pick_.set_args(scan, cl_uint(n), cl_ulong(seed), cl_uint(round), cl_uint(first_pick),
+                   cl_uint(count), picks);
+    pick_.run(cl_, count);
+}
+
 void mlt_require_device(const DeviceInfo& d) {
     if (!d.int64_atomics)
         throw InputError("device " + d.name +
@@ -94,7 +119,7 @@ MltRenderer::MltRenderer(const ClContext& cl, const DeviceScene& ds, const MltOp
       plan_(plan_mlt(ds, chain_shape(opt), scan_work_group(cl.device()))),
       program_(cl.build(mlt_program_files(opt), program_defines(cl, ds, opt))),
       k_lum_(program_.p, "mlt_luminance"), k_init_(program_.p, "mlt_init"),
-      k_step_(program_.p, "mlt_step"), k_pick_(program_.p, "burnin_pick"), scene_(cl, ds),
+      k_step_(program_.p, "mlt_step"), scene_(cl, ds),
       state_(cl, CL_MEM_READ_WRITE, plan_.bytes("state")),
       values_(cl, CL_MEM_READ_WRITE, plan_.bytes("values")),
       splat_(cl, CL_MEM_READ_WRITE, plan_.bytes("splat")),
@@ -113,7 +138,7 @@ void MltRenderer::sample_starts() {
     const std::uint32_t chains = this->chains();
     ClBuffer lum(cl_, CL_MEM_READ_WRITE, plan_.bytes("luminance"));
     ClBuffer scan(cl_, CL_MEM_READ_WRITE, plan_.bytes("scan"));
-    DeviceScan scanner(cl_, program_.p, m, sizeof(float));
+    BurnInPicker picker(cl_, program_.p, m);
     std::vector<float> host(m);
     double sum = 0, sum2 = 0;
     cl_ulong omc_seed = derive_seed(opt_.seed, kPurposeOmc);
@@ -134,10 +159,7 @@ void MltRenderer::sample_starts() {
         // Round it keeps its share of the starts (the first chains % iters rounds one more).
         std::uint32_t count = chains / iters + (it < chains % iters ? 1u : 0u);
         if (count == 0) continue;
-        scanner.run(lum, scan, m);
-        k_pick_.set_args(scan, cl_uint(m), pick_seed, cl_uint(it), cl_uint(0), cl_uint(picked),
-                         cl_uint(count), picks_);
-        k_pick_.run(cl_, count);
+        picker.pick(lum, host, m, scan, pick_seed, it, picked, count, picks_);
         starts_.push_back({it, picked, count});
         picked += count;
     }
