@@ -83,9 +83,9 @@ inline float smp_propose(const SampleSource* s, uint bounce, LayoutSlot at) {
     return layout_unit(smp_propose_bits(s, bounce, at), at.bits);
 }
 
-inline void smp_commit_slot(const SampleSource* s, uint bounce, LayoutSlot at) {
-    pss_write_bits(s->state, s->chain, s->stride, at.bit_offset, at.bits,
-                   smp_propose_bits(s, bounce, at));
+/* Puts the proposal's number in slot `at` to the chain's writer. */
+inline void smp_commit_slot(const SampleSource* s, PssWriter* w, uint bounce, LayoutSlot at) {
+    pss_put(w, s->state, s->chain, s->stride, at.bits, smp_propose_bits(s, bounce, at));
 }
 
 #else
@@ -108,7 +108,7 @@ inline float smp_propose(const SampleSource* s, uint bounce, LayoutSlot at) {
     return s->mode == SMP_REPLAY ? x : smp_perturb(x, r);
 }
 
-inline void smp_commit_slot(const SampleSource* s, uint bounce, LayoutSlot at) {
+inline void smp_commit_slot(const SampleSource* s, PssWriter* w, uint bounce, LayoutSlot at) {
     pss_store(s->state, s->chain, s->stride, at, smp_propose(s, bounce, at));
 }
 
@@ -119,13 +119,15 @@ inline float smp_uniform(SampleSource* s, uint bounce, LayoutSlot at) {
 }
 
 /* Makes the proposal the chain's state: stores its numbers for the film and
- * the first `bounces` bounces. */
+ * the first `bounces` bounces, in bit-stream order, a word at a time. */
 inline void smp_commit(const SampleSource* s, uint bounces) {
+    PssWriter w = pss_writer();
     for (uint i = 0; i < LAYOUT_CAMERA_DIMS; ++i)
-        smp_commit_slot(s, 0u, layout_film(i));
+        smp_commit_slot(s, &w, 0u, layout_film(i));
 #if LAYOUT_BOUNCE_DIMS > 0
     for (uint b = 0; b < bounces; ++b)
         for (int slot = 0; slot < (int)LAYOUT_BOUNCE_DIMS; ++slot)
-            smp_commit_slot(s, b, layout_slot(b, slot));
+            smp_commit_slot(s, &w, b, layout_slot(b, slot));
 #endif
+    pss_finish(&w, s->state, s->chain, s->stride);
 }

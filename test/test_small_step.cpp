@@ -103,40 +103,86 @@ TEST(SmallStep, IntegerDeltaFollowsTheExponentialAndIsSymmetric) {
     }
 }
 
-// Random packed states; each chain proposes (small or large, with some
-// bounces dead) and commits: every committed number equals the number the
-// path read, for layouts with 24-, 16- and 17-bit slots.
+namespace {
+
+// Random packed states; chain c proposes (small or large, some bounces dead)
+// and commits (3c) % (depth + 1) bounces (probe_commit_agrees).
+struct CommitRun {
+    SampleLayout layout;
+    std::uint32_t chains = 4096, dims = 0;
+    std::vector<cl_uint> before, after; // the state's words
+    std::vector<cl_uint> lazy, stored;  // number d of chain c at c * dims + d
+    std::uint32_t committed(std::uint32_t c) const { return (3 * c) % (layout.depth + 1); }
+};
+
+CommitRun run_commit(std::uint32_t lights) {
+    CommitRun run;
+    DeviceScene ds = layout_only_scene(features(lights));
+    run.layout = ds.layout;
+    run.dims = std::uint32_t(ds.layout.vector_dims());
+    MltOptions opt;
+    opt.threads = run.chains;
+    opt.extra_files = {kProbeFile};
+    MltRenderer mlt(test::cl(), ds, opt);
+    run.before.resize(mlt.state().bytes() / 4);
+    std::mt19937 rng(lights);
+    for (cl_uint& w : run.before)
+        w = rng();
+    mlt.state().write(test::cl(), run.before.data());
+    std::size_t numbers = std::size_t(run.chains) * run.dims;
+    ClBuffer lazy(test::cl(), CL_MEM_WRITE_ONLY, numbers * 4);
+    ClBuffer stored(test::cl(), CL_MEM_WRITE_ONLY, numbers * 4);
+    ClKernel k(mlt.program(), "probe_commit_agrees");
+    k.set_args(mlt.state(), cl_uint(run.chains), cl_uint(ds.layout.depth), cl_ulong(7), lazy,
+               stored);
+    k.run(test::cl(), run.chains);
+    run.lazy.resize(numbers);
+    run.stored.resize(numbers);
+    run.after.resize(run.before.size());
+    lazy.read(test::cl(), run.lazy.data());
+    stored.read(test::cl(), run.stored.data());
+    mlt.state().read(test::cl(), run.after.data());
+    return run;
+}
+
+} // namespace
+
+// Every committed number equals the number the path read, for layouts with
+// 24-, 16- and 17-bit slots.
 TEST(SmallStep, LazyEvaluationAndCommitAgreeOnEveryNumber) {
     for (std::uint32_t lights : {2u, 300u}) {
-        DeviceScene ds = layout_only_scene(features(lights));
-        MltOptions opt;
-        opt.threads = 4096;
-        opt.extra_files = {kProbeFile};
-        MltRenderer mlt(test::cl(), ds, opt);
-        const std::uint32_t chains = opt.threads, depth = std::uint32_t(ds.layout.depth);
-        const std::uint32_t dims = std::uint32_t(ds.layout.vector_dims());
-        std::vector<cl_uint> words(mlt.state().bytes() / 4);
-        std::mt19937 rng(lights);
-        for (cl_uint& w : words)
-            w = rng();
-        mlt.state().write(test::cl(), words.data());
-        ClBuffer lazy(test::cl(), CL_MEM_WRITE_ONLY, std::size_t(chains) * dims * 4);
-        ClBuffer stored(test::cl(), CL_MEM_WRITE_ONLY, std::size_t(chains) * dims * 4);
-        ClKernel k(mlt.program(), "probe_commit_agrees");
-        k.set_args(mlt.state(), cl_uint(chains), cl_uint(depth), cl_ulong(7), lazy, stored);
-        k.run(test::cl(), chains);
-        std::vector<cl_uint> a(std::size_t(chains) * dims), b(a.size());
-        lazy.read(test::cl(), a.data());
-        stored.read(test::cl(), b.data());
+        CommitRun run = run_commit(lights);
         std::uint64_t compared = 0;
-        for (std::uint32_t c = 0; c < chains; ++c) {
-            std::uint32_t live = kCameraDims + (3 * c) % (depth + 1) * ds.layout.bounce_dims;
+        for (std::uint32_t c = 0; c < run.chains; ++c) {
+            std::uint32_t live = kCameraDims + run.committed(c) * run.layout.bounce_dims;
             for (std::uint32_t d = 0; d < live; ++d, ++compared)
-                ASSERT_EQ(a[c * dims + d], b[c * dims + d])
+                ASSERT_EQ(run.lazy[c * run.dims + d], run.stored[c * run.dims + d])
                     << lights << " lights, chain " << c << ", number " << d;
         }
-        EXPECT_GT(compared, std::uint64_t(chains) * dims / 3);
+        EXPECT_GT(compared, std::uint64_t(run.chains) * run.dims / 3);
     }
+}
+
+// The commit writes a chain's words whole, in bit-stream order (PssWriter,
+// cl/pss.cl): the bits after the last committed number in its word are
+// zero (dead numbers, never read), and the words after it are not touched.
+TEST(SmallStep, CommitWritesWholeWordsUpToTheLastCommittedNumber) {
+    CommitRun run = run_commit(300);
+    const std::uint32_t words = std::uint32_t(run.before.size() / run.chains);
+    int partial = 0;
+    for (std::uint32_t c = 0; c < run.chains; ++c) {
+        std::uint32_t bits = kCameraDims * kHighBits + run.committed(c) * run.layout.bounce_bits;
+        std::uint32_t last = (bits - 1) / 32, used = bits - 32 * last;
+        cl_uint tail = run.after[last * run.chains + c] >> (used % 32);
+        if (used < 32) {
+            ++partial;
+            EXPECT_EQ(tail, 0u) << "chain " << c << ": dead bits of word " << last << " kept";
+        }
+        for (std::uint32_t w = last + 1; w < words; ++w)
+            ASSERT_EQ(run.after[w * run.chains + c], run.before[w * run.chains + c])
+                << "chain " << c << ": word " << w << " after the committed numbers changed";
+    }
+    EXPECT_GT(partial, int(run.chains) / 2);
 }
 
 namespace {
