@@ -76,3 +76,39 @@ __kernel void probe_chain_pixel(const Frame frame, __global const uint* state,
     out[c] = eval_pixel(&frame, pss_load(state, c, num_chains, layout_film(0u)),
                         pss_load(state, c, num_chains, layout_film(1u)));
 }
+
+#ifndef PSS_FLOAT32
+/* out[i] = v[i] moved by the small step of stream number r[i] on the grid of
+ * a `bits`-wide slot (smp_perturb_bits), for i < n. */
+__kernel void probe_small_step(__global const uint* r, __global const uint* v, const uint bits,
+                               const uint n, __global uint* out) {
+    uint i = get_global_id(0);
+    if (i < n) out[i] = smp_perturb_bits(v[i], r[i], bits);
+}
+
+/* Chain c (live bounces c % (depth + 1)) proposes with key rng_key(seed, c,
+ * 1), a small step for even c, a large one for odd c: lazy[c * dims + d] is
+ * number d as the path reads it, times 2^bits; then the proposal is committed
+ * with (3c) % (depth + 1) bounces and stored[c * dims + d] is number d of the
+ * state (the committed numbers, the film's and those bounces', must equal
+ * lazy). */
+__kernel void probe_commit_agrees(__global uint* state, const uint num_chains, const uint depth,
+                                  const ulong seed, __global uint* lazy, __global uint* stored) {
+    uint c = get_global_id(0);
+    if (c >= num_chains) return;
+    uint dims = probe_dims(depth);
+    SampleSource src = smp_chain(state, c, num_chains, rng_key(seed, c, 1u),
+                                 (c & 1u) ? SMP_LARGE : SMP_SMALL, c % (depth + 1u));
+    for (uint d = 0; d < dims; ++d) {
+        LayoutSlot at = probe_slot(d);
+        uint bounce =
+            d < LAYOUT_CAMERA_DIMS ? 0u : (d - LAYOUT_CAMERA_DIMS) / max(LAYOUT_BOUNCE_DIMS, 1u);
+        lazy[c * dims + d] = (uint)(smp_uniform(&src, bounce, at) * (float)(1u << at.bits));
+    }
+    smp_commit(&src, (3u * c) % (depth + 1u));
+    for (uint d = 0; d < dims; ++d) {
+        LayoutSlot at = probe_slot(d);
+        stored[c * dims + d] = pss_read_bits(state, c, num_chains, at.bit_offset, at.bits);
+    }
+}
+#endif

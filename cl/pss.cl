@@ -61,10 +61,11 @@ inline PssWriter pss_writer(void) {
     return w;
 }
 
-inline void pss_put(PssWriter* w, __global uint* state, uint chain, uint stride, LayoutSlot at,
-                    float u) {
-    w->bits |= (ulong)(uint)(u * (float)(1u << at.bits)) << w->count;
-    w->count += at.bits;
+/* Puts the next number, the integer v < 2^bits. */
+inline void pss_put(PssWriter* w, __global uint* state, uint chain, uint stride, uint bits,
+                    uint v) {
+    w->bits |= (ulong)v << w->count;
+    w->count += bits;
     if (w->count >= 32u) {
         state[w->word * stride + chain] = (uint)w->bits;
         w->bits >>= 32;
@@ -87,6 +88,7 @@ inline void pss_store(__global uint* state, uint chain, uint stride, LayoutSlot 
     state[at.dim * stride + chain] = as_uint(u);
 }
 
+/* One word per number: a commit stores each number as it comes. */
 typedef struct {
     uint unused;
 } PssWriter;
@@ -94,11 +96,6 @@ typedef struct {
 inline PssWriter pss_writer(void) {
     PssWriter w = {0u};
     return w;
-}
-
-inline void pss_put(PssWriter* w, __global uint* state, uint chain, uint stride, LayoutSlot at,
-                    float u) {
-    pss_store(state, chain, stride, at, u);
 }
 
 inline void pss_finish(PssWriter* w, __global uint* state, uint chain, uint stride) {}

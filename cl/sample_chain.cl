@@ -15,11 +15,6 @@
 #define SMP_SMALL 1u  /* perturb every live number */
 #define SMP_LARGE 2u  /* draw every number afresh: the OMC path of `key` */
 
-/* Small-step offsets are exponentially distributed in [SMP_S1, SMP_S2] =
- * [1/1024, 1/64]: SMP_S2 * (SMP_S1 / SMP_S2)^u = 2^-6 * 2^(-4u). */
-#define SMP_S2 (1.0f / 64.0f)
-#define SMP_LOG2_S1_OVER_S2 (-4.0f)
-
 typedef struct {
     __global uint* state;
     uint chain;
@@ -41,76 +36,98 @@ inline SampleSource smp_chain(__global uint* state, uint chain, uint stride, ulo
     return s;
 }
 
-/* Magnitude of a small step from a stream number whose top bit gives the
- * sign: SMP_S2 * 2^e, e = -4u. 2^e is 2^floor(e) from exponent bits times a
- * quadratic in the fraction (exact at both ends, within 0.3% between), so
- * the range [SMP_S1, SMP_S2] is kept exactly. Any fixed function of u keeps
- * the step symmetric; this one costs a few instructions on any device. */
-inline float smp_small_offset(uint r) {
-    float u = (float)(r & 0x7FFFFFFFu) * (1.0f / 2147483648.0f);
-    float e = SMP_LOG2_S1_OVER_S2 * u;
-    float whole = floor(e);
-    float f = e - whole;
-    float two_f = 1.0f + f * (0.6565f + 0.3435f * f);
-    return SMP_S2 * two_f * as_float(((int)whole + 127) << 23);
+/* Small step of a `bits`-wide number, in grid steps (Kelemen et al. 2002):
+ * 2^(bits - 6) * 2^(-4u), u = (r & 0x7FFFFFFF) / 2^31, rounded to nearest and
+ * at least 1: exponentially distributed in [2^-10, 2^-6] of the unit
+ * interval. r's top bit gives the sign, independent of the size, so the step
+ * is symmetric. Integer only, so a lazy evaluation and the commit that
+ * regenerates the number get the same step whatever a compiler does with
+ * float expressions (contraction, reordering). 4u = whole + f with f in Q29;
+ * 2^-f in Q31 is a degree-5 polynomial (Chebyshev interpolant, relative error
+ * below 2^-23, so within 0.53 steps of the exact exponential for bits <= 24),
+ * in Horner form with every partial result positive. For 10 <= bits <= 36. */
+inline uint smp_small_delta(uint r, uint bits) {
+    uint t = r & 0x7FFFFFFFu;
+    uint whole = t >> 29;
+    ulong f = (ulong)(t & 0x1FFFFFFFu);
+    ulong p = 19776564ul - ((2033403ul * f) >> 29);
+    p = 118751808ul - ((p * f) >> 29);
+    p = 515780381ul - ((p * f) >> 29);
+    p = 1488513547ul - ((p * f) >> 29);
+    p = 2147483527ul - ((p * f) >> 29);
+    uint shift = 37u + whole - bits; /* p * 2^(bits - 6 - whole) / 2^31 */
+    return max((uint)((p + (1ul << (shift - 1u))) >> shift), 1u);
 }
 
 #ifndef PSS_FLOAT32
 
-inline float smp_fresh(uint r, uint bits) {
-    return layout_unit(r >> (32u - bits), bits);
+/* Integer value v of a `bits`-wide number moved by the small step of stream
+ * number r, wrapping around the slot's grid. */
+inline uint smp_perturb_bits(uint v, uint r, uint bits) {
+    uint delta = smp_small_delta(r, bits);
+    return ((r >> 31) ? v + delta : v - delta) & ((1u << bits) - 1u);
 }
 
-/* x moved by the small-step offset on the slot's grid, wrapping around [0,1). */
-inline float smp_perturb(float x, uint r, uint bits) {
-    float scale = (float)(1u << bits);
-    uint delta = max(1u, (uint)(smp_small_offset(r) * scale + 0.5f));
-    uint v = (uint)(x * scale);
-    uint y = (r >> 31) ? v + delta : v - delta;
-    return layout_unit(y & ((1u << bits) - 1u), bits);
+/* The proposal's number in slot `at`, owned by bounce `bounce`, as an
+ * integer below 2^bits: the path reads it (smp_propose) and a commit stores
+ * it, one value computed the same way both times. */
+inline uint smp_propose_bits(const SampleSource* s, uint bounce, LayoutSlot at) {
+    uint r = rng_u32(s->key, at.dim);
+    bool live = at.dim < LAYOUT_CAMERA_DIMS || bounce < s->alive;
+    if (s->mode == SMP_LARGE || !live) return r >> (32u - at.bits);
+    uint v = pss_read_bits(s->state, s->chain, s->stride, at.bit_offset, at.bits);
+    return s->mode == SMP_REPLAY ? v : smp_perturb_bits(v, r, at.bits);
+}
+
+inline float smp_propose(const SampleSource* s, uint bounce, LayoutSlot at) {
+    return layout_unit(smp_propose_bits(s, bounce, at), at.bits);
+}
+
+/* Puts the proposal's number in slot `at` to the chain's writer. */
+inline void smp_commit_slot(const SampleSource* s, PssWriter* w, uint bounce, LayoutSlot at) {
+    pss_put(w, s->state, s->chain, s->stride, at.bits, smp_propose_bits(s, bounce, at));
 }
 
 #else
 
-inline float smp_fresh(uint r, uint bits) {
-    return (float)(r >> 8) * (1.0f / 16777216.0f);
-}
-
-inline float smp_perturb(float x, uint r, uint bits) {
-    float d = smp_small_offset(r);
+/* The float32 reference: 24-bit numbers moved in float arithmetic by the
+ * small step of a 24-bit slot, wrapping around [0, 1). */
+inline float smp_perturb(float x, uint r) {
+    float d = layout_unit(smp_small_delta(r, 24u), 24u);
     float y = (r >> 31) ? x + d : x - d;
     if (y < 0.0f) y += 1.0f;
     if (y >= 1.0f) y -= 1.0f;
     return y < 1.0f ? y : 0.0f;
 }
 
-#endif
-
-/* The proposal's number in slot `at`, owned by bounce `bounce`. */
 inline float smp_propose(const SampleSource* s, uint bounce, LayoutSlot at) {
     uint r = rng_u32(s->key, at.dim);
     bool live = at.dim < LAYOUT_CAMERA_DIMS || bounce < s->alive;
-    if (s->mode == SMP_LARGE || !live) return smp_fresh(r, at.bits);
+    if (s->mode == SMP_LARGE || !live) return (float)(r >> 8) * (1.0f / 16777216.0f);
     float x = pss_load(s->state, s->chain, s->stride, at);
-    return s->mode == SMP_REPLAY ? x : smp_perturb(x, r, at.bits);
+    return s->mode == SMP_REPLAY ? x : smp_perturb(x, r);
 }
+
+inline void smp_commit_slot(const SampleSource* s, PssWriter* w, uint bounce, LayoutSlot at) {
+    pss_store(s->state, s->chain, s->stride, at, smp_propose(s, bounce, at));
+}
+
+#endif
 
 inline float smp_uniform(SampleSource* s, uint bounce, LayoutSlot at) {
     return smp_propose(s, bounce, at);
 }
 
-inline void smp_commit_slot(const SampleSource* s, uint bounce, LayoutSlot at) {
-    pss_store(s->state, s->chain, s->stride, at, smp_propose(s, bounce, at));
-}
-
 /* Makes the proposal the chain's state: stores its numbers for the film and
- * the first `bounces` bounces. */
+ * the first `bounces` bounces, in bit-stream order, a word at a time. */
 inline void smp_commit(const SampleSource* s, uint bounces) {
+    PssWriter w = pss_writer();
     for (uint i = 0; i < LAYOUT_CAMERA_DIMS; ++i)
-        smp_commit_slot(s, 0u, layout_film(i));
+        smp_commit_slot(s, &w, 0u, layout_film(i));
 #if LAYOUT_BOUNCE_DIMS > 0
     for (uint b = 0; b < bounces; ++b)
         for (int slot = 0; slot < (int)LAYOUT_BOUNCE_DIMS; ++slot)
-            smp_commit_slot(s, b, layout_slot(b, slot));
+            smp_commit_slot(s, &w, b, layout_slot(b, slot));
 #endif
+    pss_finish(&w, s->state, s->chain, s->stride);
 }

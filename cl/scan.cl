@@ -1,12 +1,14 @@
 /* Work-efficient inclusive prefix sum (Blelloch 1990) of SCAN_T values
- * (float unless defined otherwise). Each work-group of SCAN_WG work-items
+ * (ulong unless defined otherwise: the burn-in's fixed-point weights, whose
+ * sums are exact in any order). Each work-group of SCAN_WG work-items
  * scans 2 * SCAN_WG elements in local memory (up-sweep, then down-sweep) and
  * writes its total; the host scans the totals the same way and scan_add adds
- * each block's offset (src/scan.cpp). SCAN_WG is a power of two that the
- * host picks from the device's work-group limit. */
+ * each block's offset (src/device/scan.cpp). SCAN_WG is a power of two that the
+ * host picks from the device's work-group limit. `in` and `out` may be the
+ * same buffer: each work-item reads its two elements before it writes them. */
 
 #ifndef SCAN_T
-#define SCAN_T float
+#define SCAN_T ulong
 #endif
 
 __kernel void scan_blocks(__global const SCAN_T* in, __global SCAN_T* out,

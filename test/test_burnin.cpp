@@ -1,6 +1,7 @@
 // Burn-in by OMC: the device scan is a prefix sum, picks are proportional to
 // luminance, and chains that start where the light is remove most of the
 // startup bias.
+#include "base/rng.hpp"
 #include "device/scan.hpp"
 #include "image/image_metrics.hpp"
 #include "render/mlt.hpp"
@@ -8,8 +9,11 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <map>
 #include <random>
+#include <set>
 
 using namespace smallmlt;
 
@@ -75,24 +79,49 @@ TEST(Scan, FloatInputMatchesHostWithinRounding) {
     }
 }
 
+// 64-bit sums (the burn-in's fixed-point weights) are exact in any order,
+// also when the scan runs in place as the burn-in runs it.
+TEST(Scan, Ulong64BitInputMatchesHostExactlyInPlace) {
+    const ClContext& cl = test::cl();
+    ClProgram prog(cl.build({"cl/scan.cl"}, scan_defines(cl.device())));
+    std::mt19937_64 rng(2);
+    for (std::size_t n : kSizes) {
+        std::vector<cl_ulong> in(n);
+        for (cl_ulong& x : in)
+            x = rng() >> 24; // sums up to 2^57
+        DeviceScan scan(cl, prog.p, n, sizeof(cl_ulong));
+        ClBuffer b(cl, CL_MEM_READ_WRITE, n * sizeof(cl_ulong), in.data());
+        scan.run(b, b, n);
+        std::vector<cl_ulong> out(n);
+        b.read(cl, out.data());
+        cl_ulong sum = 0;
+        for (std::size_t i = 0; i < n; ++i) {
+            sum += in[i];
+            ASSERT_EQ(out[i], sum) << "n " << n << " i " << i;
+        }
+    }
+}
+
 namespace {
 
-// Picks `count` indices from weights w with the burnin_pick kernel.
-std::vector<cl_uint> pick(const std::vector<float>& w, std::uint32_t count) {
+// Picks `count` indices from luminances w as the burn-in does (BurnInPicker:
+// fixed-point weights, scan, binary search); *scan_out receives the scan.
+std::vector<cl_uint> pick(const std::vector<float>& w, std::uint32_t count,
+                          std::vector<cl_ulong>* scan_out = nullptr) {
     const ClContext& cl = test::cl();
     ClProgram prog(
         cl.build({"cl/rng.cl", "cl/scan.cl", "cl/burnin.cl"}, scan_defines(cl.device())));
-    DeviceScan scan(cl, prog.p, w.size(), sizeof(float));
-    ClBuffer in(cl, CL_MEM_READ_ONLY, w.size() * sizeof(float), w.data());
-    ClBuffer cdf(cl, CL_MEM_READ_WRITE, w.size() * sizeof(float));
+    BurnInPicker picker(cl, prog.p, std::uint32_t(w.size()));
+    ClBuffer lum(cl, CL_MEM_READ_ONLY, w.size() * sizeof(float), w.data());
+    ClBuffer scan(cl, CL_MEM_READ_WRITE, w.size() * sizeof(cl_ulong));
     ClBuffer picks(cl, CL_MEM_WRITE_ONLY, count * sizeof(cl_uint));
-    scan.run(in, cdf, w.size());
-    ClKernel k(prog.p, "burnin_pick");
-    k.set_args(cdf, cl_uint(w.size()), cl_ulong(12345), cl_uint(0), cl_uint(0), cl_uint(0),
-               cl_uint(count), picks);
-    k.run(cl, count);
+    picker.pick(lum, w, std::uint32_t(w.size()), scan, 12345, 0, 0, count, picks);
     std::vector<cl_uint> out(count);
     picks.read(cl, out.data());
+    if (scan_out) {
+        scan_out->resize(w.size());
+        scan.read(cl, scan_out->data());
+    }
     return out;
 }
 
@@ -159,6 +188,172 @@ TEST(BurnInPick, OnlyZerosPicksUniformly) {
     for (int c : n)
         chi2 += (c - 200.0) * (c - 200.0) / 200.0;
     EXPECT_LT(chi2, chi2_critical_001(99));
+}
+
+namespace {
+
+// 2^20 luminances of very different sizes, ~5.6e5 in all: 8 huge ones
+// (2^16), 2^19 - 8 pairs of a small one and its complement (2^-6 and
+// 3 x 2^-6, the small ones carrying 1.5% of the light), pairs of zeros and of
+// 5e-7 (1e-6 of the mean), and 2^16 log-uniform ones in [1e-4, 4]. In a
+// float32 prefix sum around 5e5 (spacing 2^-4), each small one falls below
+// half a spacing and is rounded away.
+std::vector<float> million_samples() {
+    const std::uint32_t n = 1u << 20;
+    std::vector<float> w(n);
+    std::mt19937 rng(11);
+    std::uniform_real_distribution<double> u(std::log(1e-4), std::log(4.0));
+    for (std::uint32_t i = 0; i < n; ++i) {
+        std::uint32_t pair = i / 2;
+        if (i % (1u << 17) == 0)
+            w[i] = 65536.0f;
+        else if (i >= n - (1u << 16))
+            w[i] = float(std::exp(u(rng)));
+        else if (pair % 89 == 0)
+            w[i] = 0.0f;
+        else if (pair % 97 == 0)
+            w[i] = 5e-7f;
+        else
+            w[i] = i % 2 ? 3.0f / 64 : 1.0f / 64;
+    }
+    return w;
+}
+
+} // namespace
+
+// Every sample's exact pick probability, from the weights' scan: u =
+// floor(r T / 2^64) for uniform 64-bit r (cl/burnin.cl), so sample i gets
+// ceil(S_i 2^64 / T) - ceil(S_(i-1) 2^64 / T) of the 2^64 values of r. It is
+// its share of the luminance within a relative 1e-6 for every positive
+// sample (the smallest are 1e-12 of the total), and 0 for every zero one.
+TEST(BurnInPick, ExactProbabilitiesOfAMillionSamplesOfVeryDifferentSizes) {
+    std::vector<float> w = million_samples();
+    std::vector<cl_ulong> scan;
+    pick(w, 1, &scan);
+    long double total_lum = 0;
+    for (float x : w)
+        total_lum += x;
+    const unsigned __int128 total = scan.back();
+    auto first_r = [&](cl_ulong s) {
+        return ((unsigned __int128)s << 64) / total + (((unsigned __int128)s << 64) % total != 0);
+    };
+    double worst = 0;
+    std::size_t off = 0;
+    unsigned __int128 prev = 0;
+    for (std::size_t i = 0; i < w.size(); ++i) {
+        unsigned __int128 next = first_r(scan[i]);
+        long double p = (long double)(next - prev) / 18446744073709551616.0L;
+        prev = next;
+        if (w[i] == 0) {
+            EXPECT_EQ(p, 0.0L) << "zero-luminance sample " << i;
+            continue;
+        }
+        double rel = double(std::fabs(p / (w[i] / total_lum) - 1));
+        worst = std::max(worst, rel);
+        off += rel > 1e-6;
+    }
+    std::printf("largest relative error of a pick probability: %.3g (%zu samples above 1e-6)\n",
+                worst, off);
+    EXPECT_EQ(off, 0u);
+}
+
+// Pick frequencies of 2^20 picks from the same samples (fixed seed), by
+// luminance binade (the huge ones, the small 2^-6 ones, their complements,
+// the log-uniform ones, adjacent binades pooled until each expects 5 picks):
+// chi-square at significance 0.001; zero-luminance samples never picked.
+TEST(BurnInPick, MillionSamplesFollowTheirLuminanceByBinade) {
+    std::vector<float> w = million_samples();
+    const std::uint32_t count = 1u << 20;
+    std::vector<cl_uint> picks = pick(w, count);
+    std::map<int, double> expected, seen;
+    double total = 0;
+    for (float x : w)
+        total += x;
+    auto binade = [](float x) {
+        int e;
+        std::frexp(x, &e);
+        return e;
+    };
+    for (float x : w)
+        if (x > 0) expected[binade(x)] += count * x / total;
+    for (cl_uint i : picks) {
+        ASSERT_LT(i, w.size());
+        ASSERT_GT(w[i], 0.0f) << "zero-luminance sample " << i << " picked";
+        seen[binade(w[i])] += 1;
+    }
+    double chi2 = 0, pool_e = 0, pool_n = 0, small_e = 0, small_n = 0;
+    int pools = 0;
+    for (auto it = expected.begin(); it != expected.end(); ++it) {
+        pool_e += it->second;
+        pool_n += seen[it->first];
+        if (it->first == binade(1.0f / 64)) small_e = it->second, small_n = seen[it->first];
+        if (pool_e >= 5 || std::next(it) == expected.end()) {
+            chi2 += (pool_n - pool_e) * (pool_n - pool_e) / pool_e;
+            ++pools;
+            pool_e = pool_n = 0;
+        }
+    }
+    std::printf("chi-square %.4g over %d pools (critical %.4g); the 2^-6 samples: %.0f picks, "
+                "%.0f expected\n",
+                chi2, pools, chi2_critical_001(pools - 1), small_n, small_e);
+    ASSERT_GE(pools, 2);
+    EXPECT_LT(chi2, chi2_critical_001(pools - 1));
+}
+
+TEST(BurnInPick, WeightExponentKeepsTheTotalBelow2To62) {
+    for (double sum : {1e-40, 1e-6, 0.75, 1.0, 5.6e5, 3e38, 1e45}) {
+        int e = burnin_weight_exponent(sum);
+        EXPECT_LT(std::ldexp(sum, e), std::ldexp(1.0, 62)) << sum;
+        EXPECT_GE(std::ldexp(sum, e), std::ldexp(1.0, 61)) << sum;
+    }
+    EXPECT_EQ(burnin_weight_exponent(0.0), 0);
+    EXPECT_EQ(burnin_weight_exponent(INFINITY), 0);
+}
+
+// OMC sample keys are distinct across every round and thread the command
+// line allows (--threads up to 2^26, --burn-in-iters up to 2^16, plus the
+// round of fresh starts): a 32-bit sample number round x threads + index
+// repeats once it passes 2^32 (round 64 at 2^26 threads).
+TEST(OmcKeys, DistinctOverTheWholeCommandLineRange) {
+    const std::uint32_t max_threads = 1u << 26, max_rounds = (1u << 16) + 1;
+    std::vector<std::uint32_t> rounds = {
+        0, 1, 2, 63, 64, 65, 127, 128, 4096, max_rounds - 2, max_rounds - 1};
+    std::vector<std::uint32_t> indices = {
+        0, 1, 2, 1000, 65535, 65536, max_threads / 2, max_threads - 2, max_threads - 1};
+    std::mt19937 rng(4);
+    for (int k = 0; k < 200; ++k) {
+        rounds.push_back(rng() % max_rounds);
+        indices.push_back(rng() % max_threads);
+    }
+    std::vector<std::uint64_t> keys;
+    std::set<std::pair<std::uint32_t, std::uint32_t>> samples;
+    for (std::uint32_t r : rounds)
+        for (std::uint32_t i : indices)
+            if (samples.insert({r, i}).second) keys.push_back(omc_sample_key(77, r, i));
+    std::sort(keys.begin(), keys.end());
+    std::size_t repeats =
+        keys.size() - std::size_t(std::unique(keys.begin(), keys.end()) - keys.begin());
+    EXPECT_EQ(repeats, 0u) << "of " << samples.size() << " OMC samples, " << repeats
+                           << " repeat the key of another";
+    EXPECT_EQ(omc_round_seed(77, 0), derive_seed(77, 0));
+}
+
+// Every chain starts on the path its pick found lit: mlt_init regenerates,
+// from its round's seed and its index, the sample burnin_pick chose (rounds
+// with uneven shares: 1000 chains over 7 rounds).
+TEST(BurnIn, ChainsStartOnThePathsTheirPicksFound) {
+    DeviceScene ds = prepare_scene(test::scene("cornell-water", 32, 32));
+    MltOptions opt;
+    opt.threads = 1000;
+    opt.burn_in_iters = 7;
+    MltRenderer mlt(test::cl(), ds, opt);
+    mlt.prepare();
+    std::vector<ChainValue> v(opt.threads);
+    mlt.values().read(test::cl(), v.data());
+    int dark = 0;
+    for (const ChainValue& c : v)
+        dark += !(c.rgb[0] + c.rgb[1] + c.rgb[2] > 0);
+    EXPECT_EQ(dark, 0) << "chains started on unlit paths";
 }
 
 // The paper's Figure 1 in a test: early in a render (2 of a normal render's

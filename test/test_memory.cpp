@@ -76,6 +76,18 @@ TEST(MemoryPlan, ProposalsShareChainStates) {
     EXPECT_EQ(k4.bytes("luminance"), k1.bytes("luminance"));
 }
 
+// The burn-in keeps each thread's luminance (4 bytes) and its 64-bit
+// fixed-point weight, scanned in place (cl/burnin.cl), with 64-bit block totals.
+TEST(MemoryPlan, BurnInScansSixtyFourBitWeights) {
+    DeviceScene ds = prepare_scene(test::scene("cornell", 16, 16));
+    std::size_t wg = scan_work_group(test::cl().device());
+    MemoryPlan p = plan_mlt(ds, ChainShape{4096, 2, false}, wg);
+    EXPECT_EQ(p.bytes("luminance"), 4096u * 4);
+    EXPECT_EQ(p.bytes("scan"), 4096u * 8);
+    EXPECT_EQ(p.bytes("scan blocks"), scan_bytes(4096, wg, 8));
+    EXPECT_EQ(p.bytes("picks"), 2048u * 4);
+}
+
 // Smaller budgets give fewer threads, and a render with the chosen count
 // stays within the budget's fraction and its largest-allocation limit.
 TEST(ThreadCount, FollowsTheDeviceMemory) {

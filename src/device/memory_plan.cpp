@@ -80,9 +80,10 @@ MemoryPlan plan_mlt(const DeviceScene& ds, const ChainShape& shape, std::size_t 
     p.buffers.push_back({"longest run", sizeof(std::uint32_t), false});
     p.buffers.push_back({"picks", chains * sizeof(std::uint32_t), false});
     p.buffers.push_back({"luminance", threads * sizeof(float), true});
-    p.buffers.push_back({"scan", threads * sizeof(float), true});
+    // The burn-in's 64-bit fixed-point weights, scanned in place (cl/burnin.cl).
+    p.buffers.push_back({"scan", threads * sizeof(std::uint64_t), true});
     // Several buffers; their sum counts as one entry (at least as big as each).
-    p.buffers.push_back({"scan blocks", scan_bytes(threads, scan_wg, sizeof(float)), true});
+    p.buffers.push_back({"scan blocks", scan_bytes(threads, scan_wg, sizeof(std::uint64_t)), true});
     return p;
 }
 

@@ -38,7 +38,63 @@ const DeviceScene& require_atomics(const ClContext& cl, const DeviceScene& ds) {
     return ds;
 }
 
+// Queues `kernel` over global ids first .. first + count - 1 (a global
+// offset): whole work-groups of kDefaultWorkGroup, then one group of the rest.
+void enqueue_range(const ClContext& cl, const ClKernel& kernel, std::size_t first,
+                   std::size_t count) {
+    std::size_t whole = count / kDefaultWorkGroup * kDefaultWorkGroup;
+    std::size_t parts[2][3] = {{first, whole, kDefaultWorkGroup},
+                               {first + whole, count - whole, count - whole}};
+    for (const auto& [offset, items, local] : parts) {
+        if (items == 0) continue;
+        cl_int err = clEnqueueNDRangeKernel(cl.queue(), kernel.get(), 1, &offset, &items, &local, 0,
+                                            nullptr, nullptr);
+        if (err != CL_SUCCESS)
+            throw InputError("kernel " + kernel.name() + " over " + std::to_string(items) +
+                             " work-items from " + std::to_string(offset) + " (work-group " +
+                             std::to_string(local) + ") failed: " + cl_error_name(err));
+    }
+}
+
+// The kernels' rng_key (cl/rng.cl).
+std::uint64_t rng_key(std::uint64_t seed, std::uint32_t a, std::uint32_t b) {
+    return rng_mix64(seed + rng_mix64((std::uint64_t(a) << 32) | b));
+}
+
 } // namespace
+
+std::uint64_t omc_round_seed(std::uint64_t omc_seed, std::uint32_t round) {
+    return derive_seed(omc_seed, round);
+}
+
+std::uint64_t omc_sample_key(std::uint64_t omc_seed, std::uint32_t round, std::uint32_t index) {
+    return rng_key(omc_round_seed(omc_seed, round), index, 0);
+}
+
+int burnin_weight_exponent(double sum) {
+    if (!(sum > 0) || !std::isfinite(sum)) return 0;
+    int e;
+    std::frexp(sum, &e); // sum < 2^e
+    return 62 - e;
+}
+
+BurnInPicker::BurnInPicker(const ClContext& cl, cl_program program, std::uint32_t max_n)
+    : cl_(cl), scan_(cl, program, max_n, sizeof(cl_ulong)), weights_(program, "burnin_weights"),
+      pick_(program, "burnin_pick") {}
+
+void BurnInPicker::pick(const ClBuffer& lum, const std::vector<float>& host, std::uint32_t n,
+                        const ClBuffer& scan, std::uint64_t seed, std::uint32_t round,
+                        std::uint32_t first_pick, std::uint32_t count, const ClBuffer& picks) {
+    double sum = 0;
+    for (std::uint32_t i = 0; i < n; ++i)
+        if (std::isfinite(host[i])) sum += host[i];
+    weights_.set_args(lum, cl_uint(n), cl_int(burnin_weight_exponent(sum)), scan);
+    weights_.enqueue(cl_, n);
+    scan_.run(scan, scan, n); // in place
+    pick_.set_args(scan, cl_uint(n), cl_ulong(seed), cl_uint(round), cl_uint(first_pick),
+                   cl_uint(count), picks);
+    pick_.run(cl_, count);
+}
 
 void mlt_require_device(const DeviceInfo& d) {
     if (!d.int64_atomics)
@@ -63,7 +119,7 @@ MltRenderer::MltRenderer(const ClContext& cl, const DeviceScene& ds, const MltOp
       plan_(plan_mlt(ds, chain_shape(opt), scan_work_group(cl.device()))),
       program_(cl.build(mlt_program_files(opt), program_defines(cl, ds, opt))),
       k_lum_(program_.p, "mlt_luminance"), k_init_(program_.p, "mlt_init"),
-      k_step_(program_.p, "mlt_step"), k_pick_(program_.p, "burnin_pick"), scene_(cl, ds),
+      k_step_(program_.p, "mlt_step"), scene_(cl, ds),
       state_(cl, CL_MEM_READ_WRITE, plan_.bytes("state")),
       values_(cl, CL_MEM_READ_WRITE, plan_.bytes("values")),
       splat_(cl, CL_MEM_READ_WRITE, plan_.bytes("splat")),
@@ -82,16 +138,17 @@ void MltRenderer::sample_starts() {
     const std::uint32_t chains = this->chains();
     ClBuffer lum(cl_, CL_MEM_READ_WRITE, plan_.bytes("luminance"));
     ClBuffer scan(cl_, CL_MEM_READ_WRITE, plan_.bytes("scan"));
-    DeviceScan scanner(cl_, program_.p, m, sizeof(float));
+    BurnInPicker picker(cl_, program_.p, m);
     std::vector<float> host(m);
     double sum = 0, sum2 = 0;
     cl_ulong omc_seed = derive_seed(opt_.seed, kPurposeOmc);
     cl_ulong pick_seed = derive_seed(opt_.seed, kPurposePick);
     std::uint32_t picked = 0;
+    starts_.clear();
     for (std::uint32_t it = 0; it < iters; ++it) {
-        cl_uint first = it * m;
         k_lum_.set_args(scene_.tris, scene_.nodes, scene_.mats, scene_.lights, ds_.frame, state_,
-                        omc_seed, first, cl_uint(m), lum, stats_);
+                        cl_ulong(omc_round_seed(omc_seed, it)), cl_uint(0), cl_uint(m), lum,
+                        stats_);
         k_lum_.run(cl_, m);
         lum.read(cl_, host.data());
         for (float y : host) {
@@ -99,20 +156,20 @@ void MltRenderer::sample_starts() {
             sum2 += double(y) * y;
         }
         if (!opt_.burn_in) continue;
-        // Round it keeps its share of the m starts (the first m % iters rounds one more).
-        cl_uint count = chains / iters + (it < chains % iters ? 1u : 0u);
-        scanner.run(lum, scan, m);
-        k_pick_.set_args(scan, cl_uint(m), pick_seed, cl_uint(it), first, cl_uint(picked), count,
-                         picks_);
-        k_pick_.run(cl_, count);
+        // Round it keeps its share of the starts (the first chains % iters rounds one more).
+        std::uint32_t count = chains / iters + (it < chains % iters ? 1u : 0u);
+        if (count == 0) continue;
+        picker.pick(lum, host, m, scan, pick_seed, it, picked, count, picks_);
+        starts_.push_back({it, picked, count});
         picked += count;
     }
     if (!opt_.burn_in) {
-        // Fresh samples, numbered after those that estimated b.
-        std::vector<cl_uint> fresh(m);
-        for (std::uint32_t c = 0; c < m; ++c)
-            fresh[c] = iters * m + c;
+        // Fresh samples: round iters, after those that estimated b.
+        std::vector<cl_uint> fresh(chains);
+        for (std::uint32_t c = 0; c < chains; ++c)
+            fresh[c] = c;
         picks_.write(cl_, fresh.data());
+        starts_.push_back({iters, 0, chains});
     }
     double n = double(m) * iters;
     b_ = sum / n;
@@ -129,10 +186,14 @@ void MltRenderer::prepare() {
 }
 
 void MltRenderer::init_chains() {
-    cl_ulong seed = derive_seed(opt_.seed, kPurposeOmc);
-    k_init_.set_args(scene_.tris, scene_.nodes, scene_.mats, scene_.lights, ds_.frame, state_,
-                     values_, cl_uint(chains()), seed, picks_, stats_);
-    k_init_.run(cl_, chains());
+    cl_ulong omc_seed = derive_seed(opt_.seed, kPurposeOmc);
+    for (const StartRange& r : starts_) {
+        k_init_.set_args(scene_.tris, scene_.nodes, scene_.mats, scene_.lights, ds_.frame, state_,
+                         values_, cl_uint(chains()), cl_ulong(omc_round_seed(omc_seed, r.round)),
+                         picks_, stats_);
+        enqueue_range(cl_, k_init_, r.first, r.count);
+    }
+    cl_.finish("kernel mlt_init over " + std::to_string(chains()) + " chains");
 }
 
 void MltRenderer::step(std::uint32_t n) {

@@ -4,6 +4,7 @@
 #pragma once
 #include "device/memory_plan.hpp"
 #include "device/ocl.hpp"
+#include "device/scan.hpp"
 #include "device/scene_buffers.hpp"
 #include "image/image.hpp"
 #include "render/integrator.hpp"
@@ -44,6 +45,45 @@ void mlt_require_device(const DeviceInfo& d);
 
 // Kernel files of the MLT program, in build order.
 std::vector<std::string> mlt_program_files(const MltOptions& opt);
+
+// OMC samples of a render are numbered by (round, index): round r < T of
+// burn-in (T = --burn-in-iters) draws indices 0..N-1, and the fresh starts of
+// --burn-in none are round T. Sample (r, i) is the path of key
+// rng_key(omc_round_seed(omc_seed, r), i, 0) (cl/rng.cl), so keys stay
+// distinct however many rounds of however many threads run (a single 32-bit
+// number r * N + i would wrap at 2^32 and repeat samples), and mlt_init
+// regenerates a picked path from its round's seed and its index.
+std::uint64_t omc_round_seed(std::uint64_t omc_seed, std::uint32_t round);
+// The key of sample (round, index), as the kernels make it.
+std::uint64_t omc_sample_key(std::uint64_t omc_seed, std::uint32_t round, std::uint32_t index);
+
+// The exponent e of the burn-in's fixed-point weights (cl/burnin.cl,
+// burnin_weights): the largest with sum * 2^e < 2^62, where sum is the sum
+// of a round's finite luminances (0 if it is not positive).
+int burnin_weight_exponent(double sum);
+
+// Luminance-proportional picks among the samples of one burn-in round, on
+// the device: fixed-point weights, their prefix sum, binary search.
+class BurnInPicker {
+  public:
+    // For rounds of up to max_n samples; `program` holds cl/scan.cl (SCAN_T
+    // ulong) and cl/burnin.cl.
+    BurnInPicker(const ClContext& cl, cl_program program, std::uint32_t max_n);
+    // Of the n samples whose luminances are `lum` on the device and `host`
+    // (the same values, read back), picks `count` in proportion to
+    // luminance (uniformly if none is positive) with the streams of `seed`
+    // and `round`, and writes their indices to picks[first_pick ..
+    // first_pick + count). `scan` (n x 8 bytes) is left holding the prefix
+    // sums of the weights.
+    void pick(const ClBuffer& lum, const std::vector<float>& host, std::uint32_t n,
+              const ClBuffer& scan, std::uint64_t seed, std::uint32_t round,
+              std::uint32_t first_pick, std::uint32_t count, const ClBuffer& picks);
+
+  private:
+    const ClContext& cl_;
+    DeviceScan scan_;
+    ClKernel weights_, pick_;
+};
 
 // Above this relative standard error of b, a render says so (b scales the
 // whole image; its error is not reduced by running the chains longer).
@@ -103,12 +143,17 @@ class MltRenderer : public Integrator {
     MltOptions opt_;
     MemoryPlan plan_; // sizes of every buffer below (src/memory_plan.cpp)
     ClProgram program_;
-    ClKernel k_lum_, k_init_, k_step_, k_pick_;
+    ClKernel k_lum_, k_init_, k_step_;
     SceneBuffers scene_;
     ClBuffer state_, values_, splat_, stats_, longest_run_, picks_;
     double b_ = 0, b_rel_error_ = 0;
     bool prepared_ = false;
     std::uint32_t iterations_ = 0;
+    // Chains [first, first + count) start at samples of round `round`.
+    struct StartRange {
+        std::uint32_t round, first, count;
+    };
+    std::vector<StartRange> starts_;
     double prepare_seconds_ = 0, step_seconds_ = 0; // wall time of b + chain start, of steps
 };
 

@@ -1,0 +1,256 @@
+// The small step of a packed number (cl/sample_chain.cl) is integer-only: it
+// follows the exponential law of Kelemen et al. within one grid step, is
+// symmetric, and the number a lazy evaluation reads is the number a commit
+// stores, for every slot width (24, 16 and a widened 17-bit light pick).
+#include "render/mlt.hpp"
+#include "scene/sample_layout.hpp"
+#include "test_support.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+#include <random>
+
+using namespace smallmlt;
+
+namespace {
+
+const char* kProbeFile = "cl/kernels_probe_mlt.cl";
+
+DeviceScene layout_only_scene(const SceneFeatures& f) {
+    DeviceScene ds;
+    ds.layout = make_layout(f);
+    ds.frame.width = ds.frame.height = 4;
+    ds.frame.depth = f.depth;
+    return ds;
+}
+
+// Features whose layout has 24-bit (film, BSDF, light) and 16-bit (Fresnel,
+// roulette) slots, and a light pick of 16 bits (<= 256 lights) or 17 (300).
+SceneFeatures features(std::uint32_t lights) {
+    SceneFeatures f;
+    f.diffuse = f.dielectric = true;
+    f.num_lights = lights;
+    f.depth = 6;
+    return f;
+}
+
+// Exact small step in grid steps of a `bits`-wide slot: 2^(bits - 6 - 4u),
+// u = (r & 0x7FFFFFFF) / 2^31.
+double reference_delta(std::uint32_t r, int bits) {
+    double u = double(r & 0x7FFFFFFFu) / 2147483648.0;
+    return std::ldexp(std::exp2(-4.0 * u), bits - 6);
+}
+
+} // namespace
+
+// Over 2^20 random stream numbers (and the ends of the range), for each slot
+// width: the step is within one grid step of the exact exponential, at least
+// one step, its size does not depend on the sign bit, and the move with the
+// sign bit flipped is the mirror image (v + d and v - d, modulo 2^bits).
+TEST(SmallStep, IntegerDeltaFollowsTheExponentialAndIsSymmetric) {
+    DeviceScene ds = layout_only_scene(features(300));
+    MltOptions opt;
+    opt.threads = 64;
+    opt.extra_files = {kProbeFile};
+    MltRenderer mlt(test::cl(), ds, opt);
+    const std::uint32_t n = 1u << 20;
+    std::vector<cl_uint> r(2 * n), v(2 * n);
+    std::mt19937 rng(17);
+    for (std::uint32_t i = 0; i < n; ++i) {
+        r[2 * i] = rng();
+        r[2 * i + 1] = r[2 * i] ^ 0x80000000u; // the mirror move
+        v[2 * i] = v[2 * i + 1] = rng();
+    }
+    const std::uint32_t ends[] = {0u, 1u, 0x1FFFFFFFu, 0x20000000u, 0x7FFFFFFEu, 0x7FFFFFFFu};
+    for (std::uint32_t i = 0; i < 6; ++i) {
+        r[2 * i] = ends[i];
+        r[2 * i + 1] = ends[i] | 0x80000000u;
+    }
+    ClBuffer rb(test::cl(), CL_MEM_READ_ONLY, r.size() * 4, r.data());
+    ClBuffer out(test::cl(), CL_MEM_WRITE_ONLY, r.size() * 4);
+    for (int bits : {24, 16, 17}) {
+        const std::uint32_t mask = (1u << bits) - 1u;
+        std::vector<cl_uint> vb(v.size());
+        for (std::size_t i = 0; i < v.size(); ++i)
+            vb[i] = v[i] & mask;
+        ClBuffer vbuf(test::cl(), CL_MEM_READ_ONLY, vb.size() * 4, vb.data());
+        ClKernel k(mlt.program(), "probe_small_step");
+        k.set_args(rb, vbuf, cl_uint(bits), cl_uint(r.size()), out);
+        k.run(test::cl(), r.size());
+        std::vector<cl_uint> moved(r.size());
+        out.read(test::cl(), moved.data());
+        double worst = 0, lo = 1e30, hi = 0;
+        for (std::uint32_t i = 0; i < n; ++i) {
+            std::uint32_t a = 2 * i, b = a + 1, up = r[a] >> 31 ? a : b, down = up ^ 1u;
+            std::uint32_t d_up = (moved[up] - vb[up]) & mask;
+            std::uint32_t d_down = (vb[down] - moved[down]) & mask;
+            ASSERT_EQ(d_up, d_down) << "bits " << bits << " r " << r[a];
+            ASSERT_GE(d_up, 1u);
+            double err = std::abs(double(d_up) - reference_delta(r[a], bits));
+            worst = std::max(worst, err);
+            ASSERT_LE(err, 1.0) << "bits " << bits << " r " << r[a] << ": step " << d_up
+                                << ", exact " << reference_delta(r[a], bits);
+            lo = std::min(lo, double(d_up));
+            hi = std::max(hi, double(d_up));
+        }
+        std::printf("bits %d: steps %g..%g grid steps, largest distance from the exact "
+                    "exponential %.3f steps\n",
+                    bits, lo, hi, worst);
+        EXPECT_EQ(lo, std::ldexp(1.0, bits - 10));
+        EXPECT_EQ(hi, std::ldexp(1.0, bits - 6));
+    }
+}
+
+namespace {
+
+// Random packed states; chain c proposes (small or large, some bounces dead)
+// and commits (3c) % (depth + 1) bounces (probe_commit_agrees).
+struct CommitRun {
+    SampleLayout layout;
+    std::uint32_t chains = 4096, dims = 0;
+    std::vector<cl_uint> before, after; // the state's words
+    std::vector<cl_uint> lazy, stored;  // number d of chain c at c * dims + d
+    std::uint32_t committed(std::uint32_t c) const { return (3 * c) % (layout.depth + 1); }
+};
+
+CommitRun run_commit(std::uint32_t lights) {
+    CommitRun run;
+    DeviceScene ds = layout_only_scene(features(lights));
+    run.layout = ds.layout;
+    run.dims = std::uint32_t(ds.layout.vector_dims());
+    MltOptions opt;
+    opt.threads = run.chains;
+    opt.extra_files = {kProbeFile};
+    MltRenderer mlt(test::cl(), ds, opt);
+    run.before.resize(mlt.state().bytes() / 4);
+    std::mt19937 rng(lights);
+    for (cl_uint& w : run.before)
+        w = rng();
+    mlt.state().write(test::cl(), run.before.data());
+    std::size_t numbers = std::size_t(run.chains) * run.dims;
+    ClBuffer lazy(test::cl(), CL_MEM_WRITE_ONLY, numbers * 4);
+    ClBuffer stored(test::cl(), CL_MEM_WRITE_ONLY, numbers * 4);
+    ClKernel k(mlt.program(), "probe_commit_agrees");
+    k.set_args(mlt.state(), cl_uint(run.chains), cl_uint(ds.layout.depth), cl_ulong(7), lazy,
+               stored);
+    k.run(test::cl(), run.chains);
+    run.lazy.resize(numbers);
+    run.stored.resize(numbers);
+    run.after.resize(run.before.size());
+    lazy.read(test::cl(), run.lazy.data());
+    stored.read(test::cl(), run.stored.data());
+    mlt.state().read(test::cl(), run.after.data());
+    return run;
+}
+
+} // namespace
+
+// Every committed number equals the number the path read, for layouts with
+// 24-, 16- and 17-bit slots.
+TEST(SmallStep, LazyEvaluationAndCommitAgreeOnEveryNumber) {
+    for (std::uint32_t lights : {2u, 300u}) {
+        CommitRun run = run_commit(lights);
+        std::uint64_t compared = 0;
+        for (std::uint32_t c = 0; c < run.chains; ++c) {
+            std::uint32_t live = kCameraDims + run.committed(c) * run.layout.bounce_dims;
+            for (std::uint32_t d = 0; d < live; ++d, ++compared)
+                ASSERT_EQ(run.lazy[c * run.dims + d], run.stored[c * run.dims + d])
+                    << lights << " lights, chain " << c << ", number " << d;
+        }
+        EXPECT_GT(compared, std::uint64_t(run.chains) * run.dims / 3);
+    }
+}
+
+// The commit writes a chain's words whole, in bit-stream order (PssWriter,
+// cl/pss.cl): the bits after the last committed number in its word are
+// zero (dead numbers, never read), and the words after it are not touched.
+TEST(SmallStep, CommitWritesWholeWordsUpToTheLastCommittedNumber) {
+    CommitRun run = run_commit(300);
+    const std::uint32_t words = std::uint32_t(run.before.size() / run.chains);
+    int partial = 0;
+    for (std::uint32_t c = 0; c < run.chains; ++c) {
+        std::uint32_t bits = kCameraDims * kHighBits + run.committed(c) * run.layout.bounce_bits;
+        std::uint32_t last = (bits - 1) / 32, used = bits - 32 * last;
+        cl_uint tail = run.after[last * run.chains + c] >> (used % 32);
+        if (used < 32) {
+            ++partial;
+            EXPECT_EQ(tail, 0u) << "chain " << c << ": dead bits of word " << last << " kept";
+        }
+        for (std::uint32_t w = last + 1; w < words; ++w)
+            ASSERT_EQ(run.after[w * run.chains + c], run.before[w * run.chains + c])
+                << "chain " << c << ": word " << w << " after the committed numbers changed";
+    }
+    EXPECT_GT(partial, int(run.chains) / 2);
+}
+
+namespace {
+
+// A furnace box (scenes/furnace) whose six walls are cut into 6 x 6 x 2
+// emissive triangles each: 432 lights, so the light pick is 17 bits wide.
+Scene many_light_furnace() {
+    std::string dir = test::scratch_dir("many-light-furnace");
+    std::string obj = "mtllib f.mtl\nusemtl wall\n";
+    int v = 0;
+    const int cells = 6;
+    for (int axis = 0; axis < 3; ++axis)
+        for (int side = -1; side <= 1; side += 2)
+            for (int i = 0; i < cells; ++i)
+                for (int j = 0; j < cells; ++j) {
+                    double a0 = -1 + 2.0 * i / cells, a1 = -1 + 2.0 * (i + 1) / cells;
+                    double b0 = -1 + 2.0 * j / cells, b1 = -1 + 2.0 * (j + 1) / cells;
+                    double corner[4][2] = {{a0, b0}, {a1, b0}, {a1, b1}, {a0, b1}};
+                    for (auto& q : corner) {
+                        double p[3];
+                        p[axis] = side;
+                        p[(axis + 1) % 3] = q[0];
+                        p[(axis + 2) % 3] = q[1];
+                        obj += "v " + std::to_string(p[0]) + " " + std::to_string(p[1]) + " " +
+                               std::to_string(p[2]) + "\n";
+                    }
+                    obj += "f " + std::to_string(v + 1) + " " + std::to_string(v + 2) + " " +
+                           std::to_string(v + 3) + "\nf " + std::to_string(v + 1) + " " +
+                           std::to_string(v + 3) + " " + std::to_string(v + 4) + "\n";
+                    v += 4;
+                }
+    test::write_file(dir + "/f.obj", obj);
+    test::write_file(dir + "/f.mtl", "newmtl wall\nKd 0.5 0.5 0.5\nKe 1 1 1\n");
+    test::write_file(dir + "/f.scene", "film 32 32\ncamera 0 0 0.5  0 0 -1  0 1 0  60\n"
+                                       "depth 6\nmesh f.obj\n");
+    return load_scene(dir + "/f.scene");
+}
+
+} // namespace
+
+// Whole paths: on cornell-water (24- and 16-bit slots) and on a furnace with
+// a 17-bit light pick, the lazily evaluated proposal and the state it leaves
+// after the commit give the same F and bounces, bit for bit.
+TEST(SmallStep, LazyPathEqualsCommittedPath) {
+    DeviceScene water = prepare_scene(test::scene("cornell-water", 32, 32));
+    DeviceScene furnace = prepare_scene(many_light_furnace());
+    ASSERT_EQ(furnace.layout.bits[kLightPick], 17);
+    for (const DeviceScene* ds : {&water, &furnace}) {
+        MltOptions opt;
+        opt.threads = 1024;
+        opt.extra_files = {kProbeFile};
+        MltRenderer mlt(test::cl(), *ds, opt);
+        mlt.prepare();
+        ClBuffer eager(test::cl(), CL_MEM_READ_WRITE, mlt.state().bytes());
+        ClBuffer out(test::cl(), CL_MEM_WRITE_ONLY,
+                     std::size_t(opt.threads) * 3 * sizeof(cl_float4));
+        SceneBuffers sb(test::cl(), *ds);
+        ClKernel k(mlt.program(), "probe_lazy_eager");
+        k.set_args(sb.tris, sb.nodes, sb.mats, sb.lights, ds->frame, mlt.state(), mlt.values(),
+                   eager, cl_uint(opt.threads), cl_ulong(101), out);
+        k.run(test::cl(), opt.threads);
+        std::vector<cl_float4> f(std::size_t(opt.threads) * 3);
+        out.read(test::cl(), f.data());
+        int lit = 0;
+        for (std::uint32_t c = 0; c < opt.threads; ++c) {
+            ASSERT_EQ(std::memcmp(f[3 * c].s, f[3 * c + 2].s, 16), 0) << "chain " << c;
+            lit += f[3 * c].s[0] + f[3 * c].s[1] + f[3 * c].s[2] > 0;
+        }
+        EXPECT_GT(lit, int(opt.threads) / 10) << "too few lit paths to test anything";
+    }
+}
