@@ -112,3 +112,19 @@ __kernel void probe_commit_agrees(__global uint* state, const uint num_chains, c
     }
 }
 #endif
+
+/* Where each chain is, number by number: out[c * (n + 1) + j] is the integer
+ * value (below 2^bits) that chain c stores in number dims[j] (numbered as
+ * probe_slot numbers them), and out[c * (n + 1) + n] its live bounces (the
+ * ChainValue meta). Numbers of bounces at or past the live count are stale. */
+__kernel void probe_chain_numbers(__global const uint* state, __global const ChainValue* values,
+                                  const uint num_chains, __global const uint* dims, const uint n,
+                                  __global uint* out) {
+    uint c = get_global_id(0);
+    if (c >= num_chains) return;
+    for (uint j = 0; j < n; ++j) {
+        LayoutSlot at = probe_slot(dims[j]);
+        out[c * (n + 1u) + j] = (uint)(pss_load(state, c, num_chains, at) * (float)(1u << at.bits));
+    }
+    out[c * (n + 1u) + n] = values[c].meta & CHAIN_BOUNCES_MASK;
+}

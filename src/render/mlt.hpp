@@ -34,7 +34,8 @@ struct MltOptions {
     // (reported, not acted on; doc/stability.md).
     std::uint32_t stuck_run = kDefaultStuckRun;
     // The file that defines eval_state: cl/eval_path.cl renders the scene;
-    // the sampler tests use cl/eval_target.cl, a known 2D target.
+    // the sampler tests use cl/eval_target.cl, a known target (2D, or with
+    // bounces on a layout that has bounce slots).
     std::string evaluator = "cl/eval_path.cl";
     std::vector<std::string> extra_files; // appended to the program (test probes)
 };

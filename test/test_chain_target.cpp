@@ -1,0 +1,728 @@
+// The MLT sampler against a known target with bounces (cl/eval_target.cl on
+// a layout with two 24-bit and two 16-bit slots a bounce, depth 4): the
+// chains' states follow the target's closed-form marginals, live and dead
+// bounces included, and the splatted image follows its per-pixel integral.
+// DELIVERY.md (or the comments below) gives the derivations.
+#include "render/mlt.hpp"
+#include "scene/sample_layout.hpp"
+#include "test_support.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdlib>
+#include <cstring>
+#include <string>
+#include <vector>
+
+using namespace smallmlt;
+
+namespace {
+
+const char* kProbeFile = "cl/kernels_probe_mlt.cl";
+
+// Diffuse and dielectric, no light, depth 4: each bounce has BSDF_U, BSDF_V
+// (24 bits), FRESNEL and RR (16 bits), 80 bits; slots straddle words.
+constexpr int kDepth = 4;
+SceneFeatures target_features() {
+    SceneFeatures f;
+    f.diffuse = true;
+    f.dielectric = true;
+    f.depth = kDepth;
+    return f;
+}
+
+DeviceScene layout_only_scene(const SceneFeatures& f, int width, int height) {
+    DeviceScene ds;
+    ds.layout = make_layout(f);
+    ds.frame.width = width;
+    ds.frame.height = height;
+    ds.frame.depth = f.depth;
+    return ds;
+}
+
+// ---------------------------------------------------------------------------
+// Exact sums over a slot's grid {i / n : i = 0 .. n - 1}.
+
+// sum_{i = i0}^{i1 - 1} (alpha + beta i / n): exact in double for n <= 2^24.
+double lin_sum(double i0, double i1, double n, double alpha, double beta) {
+    if (i1 <= i0) return 0.0;
+    double count = i1 - i0;
+    return count * alpha + beta * (i0 + i1 - 1.0) * count / (2.0 * n);
+}
+
+// sum_{j = j0}^{j1 - 1} sin^2(2 pi j / n) = count / 2 - (1/2) sum cos(w j),
+// w = 4 pi / n, with the Dirichlet sum
+// sum_{j0}^{j1-1} cos(w j) = sin(count w / 2) / sin(w / 2) cos(w (j0 + j1 - 1) / 2).
+double sin2_sum(double j0, double j1, double n) {
+    double count = j1 - j0, w = 4.0 * M_PI / n;
+    double cos_sum = std::sin(count * w / 2) / std::sin(w / 2) * std::cos(w * (j0 + j1 - 1) / 2);
+    return count / 2 - cos_sum / 2;
+}
+
+// The target of cl/eval_target.cl on the layout of target_features(), and
+// its marginals under pi(u) = F(u) / sum F on the grid (film numbers on the
+// 2^-24 grid, each bounce slot on its own). All weights are "per unit
+// volume": sums over grid points divided by the number of grid points.
+// DELIVERY.md derives each of them.
+struct Target {
+    static constexpr double kN24 = 16777216.0, kN16 = 65536.0;
+    static constexpr double kQ[2] = {0.5, 0.75}; // continuation phase threshold, left / right
+
+    SampleLayout layout;
+    double H = 0;                      // mean of h(a)
+    double E = 0;                      // mean over a bounce's numbers of all factors but p(c)
+    double p_lt[2] = {}, p_ge[2] = {}; // mean of p(c) 1[phase < q] and p(c) 1[phase >= q]
+    double V[kDepth][2] = {};          // weight of bounces k.. given bounce k is live
+    double W[kDepth + 1][2] = {};      // weight of "exactly l live bounces", l = 1..D
+    double G[2] = {};                  // weight of the film's left / right half
+    double Z = 0;                      // sum over the grid of F / grid size = b
+
+    explicit Target(const SampleLayout& l) : layout(l) {
+        H = h_stripes(0, 64);
+        E = H;
+        for (int s = 0; s < kSlotCount; ++s) {
+            if (!l.has(Slot(s)) || s == kBsdfU || s == kFresnel) continue;
+            double n = std::ldexp(1.0, l.bits[s]);
+            E *= lin_sum(0, n, n, 0.75, 0.5) / n; // 3/4 + v/2
+        }
+        for (int side = 0; side < 2; ++side) {
+            for (int ph = 0; ph < 4; ++ph)
+                (below(ph, side) ? p_lt : p_ge)[side] += p_phase(0, 32, ph);
+            V[kDepth - 1][side] = E * (p_lt[side] + p_ge[side]);
+            for (int k = kDepth - 2; k >= 0; --k)
+                V[k][side] = E * (p_ge[side] + p_lt[side] * V[k + 1][side]);
+            for (int len = 1; len <= kDepth; ++len)
+                W[len][side] = std::pow(E, len) * std::pow(p_lt[side], len - 1) *
+                               (len < kDepth ? p_ge[side] : p_lt[side] + p_ge[side]);
+        }
+        for (int bx = 0; bx < 8; ++bx)
+            G[bx >= 4] += film_column(bx, 8);
+        Z = G[0] * V[0][0] + G[1] * V[0][1];
+    }
+
+    // Stripe factor s(v, n) on stripe m: 5/4 odd, 3/4 even.
+    static double s_factor(int m) { return m % 2 ? 1.25 : 0.75; }
+    // sum of (1 + 3x) s(x, 64) over the x grid points of stripes m0 .. m1 - 1
+    // (of 64), / N24; parity -1: all stripes, 0 / 1: even / odd ones only.
+    static double gx_stripes(int m0, int m1, int parity = -1) {
+        double sum = 0, w = kN24 / 64;
+        for (int m = m0; m < std::min(m1, 60); ++m) // 0 from 15/16 = stripe 60 on
+            if (parity < 0 || m % 2 == parity)
+                sum += s_factor(m) * lin_sum(m * w, (m + 1) * w, kN24, 1.0, 3.0);
+        return sum / kN24;
+    }
+    // Weight of film cell: x bin bx of bins_x (x stripes of one parity, or
+    // all), y bin by of bins_y; both counts multiples of 4 and at most 64,
+    // so no cell straddles x, y = 1/4 or a stripe.
+    static double film(int bx, int bins_x, int by, int bins_y, int parity = -1) {
+        if ((bx + 1) * 4 <= bins_x && (by + 1) * 4 <= bins_y) return 0.0; // g = 0 there
+        int per = 64 / bins_x;
+        double w = kN24 / bins_y;
+        double gy = (w + sin2_sum(by * w, (by + 1) * w, kN24)) / kN24;
+        return gx_stripes(bx * per, (bx + 1) * per, parity) * gy;
+    }
+    static double film_column(int bx, int bins_x) {
+        double sum = 0;
+        for (int by = 0; by < 4; ++by)
+            sum += film(bx, bins_x, by, 4);
+        return sum;
+    }
+    static int side_of_column(int bx, int bins) { return 2 * bx >= bins; }
+    // h summed over stripes m0 .. m1 - 1 (of 64) of the 24-bit grid, / N24;
+    // parity -1: all of them, 0 or 1: the even or the odd ones only.
+    static double h_stripes(int m0, int m1, int parity = -1) {
+        double sum = 0, w = kN24 / 64;
+        for (int m = std::max(m0, 8); m < m1; ++m) // h = 0 below 1/8 = stripe 8
+            if (parity < 0 || m % 2 == parity)
+                sum += (m % 2 ? 1.5 : 0.5) * lin_sum(m * w, (m + 1) * w, kN24, 0.5, 1.0);
+        return sum / kN24;
+    }
+    // Quarter `quarter` of c's phase stripes (of 32) is the stripe
+    // 4 t + quarter of 128: below q or not.
+    static bool below(int quarter, int side) { return (quarter + 1) / 4.0 <= kQ[side]; }
+    // p(c) = (3/4 + c/2) s(c, 128) summed over quarter `quarter` (0..3) of
+    // c's phase stripes t0 .. t1 - 1 (of 32), / N16.
+    static double p_phase(int t0, int t1, int quarter) {
+        double sum = 0, w = kN16 / 128;
+        for (int t = t0; t < t1; ++t) {
+            int n = 4 * t + quarter;
+            if (n < 120) // 0 from 15/16 = stripe 120 on
+                sum += s_factor(n) * lin_sum(n * w, (n + 1) * w, kN16, 0.75, 0.5);
+        }
+        return sum / kN16;
+    }
+    // Weight of "c_0 in quarter `quarter` of phase stripes t0 .. t1 - 1" on
+    // one side: its p times the bounce's other factors times what follows.
+    double c0_weight(int t0, int t1, int quarter, int side) const {
+        return p_phase(t0, t1, quarter) * E * (below(quarter, side) ? V[1][side] : 1.0);
+    }
+    // Pixel value of the image (bins x bins pixels): pixels * integral of F
+    // over the pixel.
+    double pixel(int bx, int by, int bins) const {
+        return double(bins) * bins * film(bx, bins, by, bins) * V[0][side_of_column(bx, bins)];
+    }
+};
+
+// ---------------------------------------------------------------------------
+// Distributions: regularized incomplete beta (Numerical Recipes' continued
+// fraction), the F and t tails.
+
+double beta_cf(double a, double b, double x) {
+    const double eps = 1e-15, tiny = 1e-300;
+    double qab = a + b, qap = a + 1, qam = a - 1, c = 1, d = 1 - qab * x / qap;
+    if (std::fabs(d) < tiny) d = tiny;
+    d = 1 / d;
+    double h = d;
+    for (int m = 1; m < 100000; ++m) {
+        int m2 = 2 * m;
+        double aa = m * (b - m) * x / ((qam + m2) * (a + m2));
+        d = 1 + aa * d;
+        if (std::fabs(d) < tiny) d = tiny;
+        c = 1 + aa / c;
+        if (std::fabs(c) < tiny) c = tiny;
+        d = 1 / d;
+        h *= d * c;
+        aa = -(a + m) * (qab + m) * x / ((a + m2) * (qap + m2));
+        d = 1 + aa * d;
+        if (std::fabs(d) < tiny) d = tiny;
+        c = 1 + aa / c;
+        if (std::fabs(c) < tiny) c = tiny;
+        d = 1 / d;
+        double del = d * c;
+        h *= del;
+        if (std::fabs(del - 1) < eps) break;
+    }
+    return h;
+}
+
+double beta_inc(double a, double b, double x) {
+    if (x <= 0) return 0;
+    if (x >= 1) return 1;
+    double lbt =
+        std::lgamma(a + b) - std::lgamma(a) - std::lgamma(b) + a * std::log(x) + b * std::log1p(-x);
+    if (x < (a + 1) / (a + b + 2)) return std::exp(lbt) * beta_cf(a, b, x) / a;
+    return 1 - std::exp(lbt) * beta_cf(b, a, 1 - x) / b;
+}
+
+// P(F > f) for F ~ F(d1, d2).
+double f_upper(double f, double d1, double d2) {
+    return f <= 0 ? 1.0 : beta_inc(d2 / 2, d1 / 2, d2 / (d2 + d1 * f));
+}
+
+// P(|T| > t) for T ~ t(nu).
+double t_two_sided(double t, double nu) {
+    return beta_inc(nu / 2, 0.5, nu / (nu + t * t));
+}
+
+// The x where a decreasing tail(x) falls to alpha (bisection).
+template <typename Tail> double critical(Tail tail, double alpha, double hi) {
+    double lo = 0;
+    while (tail(hi) > alpha)
+        hi *= 2;
+    for (int i = 0; i < 200; ++i) {
+        double mid = (lo + hi) / 2;
+        (tail(mid) > alpha ? lo : hi) = mid;
+    }
+    return hi;
+}
+
+// ---------------------------------------------------------------------------
+// Hotelling's T^2 over chains. Chain c contributes the vector n_c of its
+// counts per cell over S snapshots. Chains are independent and identically
+// distributed (own streams; their starts are independent up to the burn-in
+// picks, see below), so however correlated a chain's snapshots are, the mean
+// of n_c over C chains is asymptotically normal with covariance Sigma / C,
+// and with Sigma estimated from the chains,
+//   T^2 = C (mean - S p)^T Sigma^-1 (mean - S p),  (C - q) T^2 / (q (C - 1)) ~ F(q, C - q)
+// for q used cells. Cells of zero probability are left out (they must stay
+// empty: checked apart), and so is the last used cell (the counts of a chain
+// sum to S, so Sigma is singular on all cells).
+struct CellStat {
+    std::string name;
+    int cells = 0;
+    std::vector<double> p;             // target probability of each cell
+    std::vector<std::uint16_t> counts; // chains x cells
+};
+
+struct Verdict {
+    double t2 = 0, f = 0, p_value = 1, limit = 0;
+    int q = 0;
+    std::uint64_t in_zero_cells = 0;
+};
+
+Verdict hotelling(const CellStat& st, std::uint32_t chains, std::uint32_t snapshots, double alpha) {
+    Verdict v;
+    std::vector<int> used;
+    for (int j = 0; j < st.cells; ++j)
+        if (st.p[j] > 0)
+            used.push_back(j);
+        else
+            for (std::uint32_t c = 0; c < chains; ++c)
+                v.in_zero_cells += st.counts[std::size_t(c) * st.cells + j];
+    used.pop_back();
+    const int q = int(used.size());
+    const double n = chains;
+    std::vector<double> mean(q, 0.0), cov(std::size_t(q) * q, 0.0), x(q);
+    for (std::uint32_t c = 0; c < chains; ++c)
+        for (int a = 0; a < q; ++a)
+            mean[a] += st.counts[std::size_t(c) * st.cells + used[a]] / n;
+    for (std::uint32_t c = 0; c < chains; ++c) {
+        for (int a = 0; a < q; ++a)
+            x[a] = st.counts[std::size_t(c) * st.cells + used[a]] - mean[a];
+        for (int a = 0; a < q; ++a)
+            for (int b = 0; b <= a; ++b)
+                cov[std::size_t(a) * q + b] += x[a] * x[b] / (n - 1);
+    }
+    // Cholesky: cov = L L^T, then T^2 = n |L^-1 d|^2.
+    std::vector<double> d(q);
+    for (int a = 0; a < q; ++a)
+        d[a] = mean[a] - snapshots * st.p[used[a]];
+    bool ok = true;
+    for (int a = 0; a < q && ok; ++a) {
+        for (int b = 0; b <= a; ++b) {
+            double s = cov[std::size_t(a) * q + b];
+            for (int k = 0; k < b; ++k)
+                s -= cov[std::size_t(a) * q + k] * cov[std::size_t(b) * q + k];
+            if (a == b) {
+                if (!(s > 1e-12 * (mean[a] + 1e-300))) ok = false; // a cell that never varies
+                cov[std::size_t(a) * q + a] = std::sqrt(std::max(s, 1e-300));
+            } else {
+                cov[std::size_t(a) * q + b] = s / cov[std::size_t(b) * q + b];
+            }
+        }
+    }
+    double t2 = 0;
+    if (ok) {
+        for (int a = 0; a < q; ++a) {
+            double s = d[a];
+            for (int k = 0; k < a; ++k)
+                s -= cov[std::size_t(a) * q + k] * x[k];
+            x[a] = s / cov[std::size_t(a) * q + a];
+            t2 += x[a] * x[a];
+        }
+        t2 *= n;
+    } else {
+        t2 = INFINITY;
+    }
+    v.q = q;
+    v.t2 = t2;
+    v.f = t2 * (n - q) / (q * (n - 1));
+    v.p_value = std::isfinite(v.f) ? f_upper(v.f, q, n - q) : 0.0;
+    double f_limit = critical([&](double f) { return f_upper(f, q, n - q); }, alpha, 2.0);
+    v.limit = f_limit * q * (n - 1) / (n - q);
+    return v;
+}
+
+// For calibration runs: CT_SEED=n replaces the fixed base seed (11), and
+// CT_DIAG=1 prints lag correlations and the summary (chain test) or every t
+// (splat test).
+double env_or(const char* name, double fallback) {
+    const char* v = std::getenv(name);
+    return v ? std::atof(v) : fallback;
+}
+
+} // namespace
+
+// ---------------------------------------------------------------------------
+// The closed forms against brute-force sums over every grid point, with the
+// per-number functions written as cl/eval_target.cl computes them (float).
+
+float host_stripes(float v, float n, float odd, float even) {
+    return (std::uint32_t(v * n) & 1u) ? odd : even;
+}
+
+float host_h(float a) { // SLOT_BSDF_U
+    return a < 0.125f ? 0.0f : (0.5f + a) * host_stripes(a, 64.0f, 1.5f, 0.5f);
+}
+
+float host_p(float c) { // the continuation slot's factor
+    return c < 0.9375f ? (0.75f + 0.5f * c) * host_stripes(c, 128.0f, 1.25f, 0.75f) : 0.0f;
+}
+
+float host_sx(float x) { // the film's stripes
+    return x < 0.9375f ? host_stripes(x, 64.0f, 1.25f, 0.75f) : 0.0f;
+}
+
+bool host_go_on(float c, float q) { // and its phase
+    return c * 32.0f - std::floor(c * 32.0f) < q;
+}
+
+TEST(ChainTargetMath, ClosedFormsEqualGridSums) {
+    const Target tg(make_layout(target_features()));
+    // h over the 24-bit grid, per (16 bins x parity) cell of a_0.
+    std::vector<double> h_cells(32, 0.0);
+    for (std::uint32_t i = 0; i < (1u << 24); ++i)
+        h_cells[(i >> 20) * 2 + ((i >> 18) & 1u)] += host_h(float(i) / 16777216.0f);
+    for (int j = 0; j < 32; ++j)
+        EXPECT_NEAR(h_cells[j] / Target::kN24,
+                    Target::h_stripes(4 * (j / 2), 4 * (j / 2) + 4, j % 2), 1e-12)
+            << "a_0 cell " << j;
+    // p(c) and the continuation over the 16-bit grid, per side and quarter.
+    for (int side = 0; side < 2; ++side) {
+        double lt = 0, ge = 0, quarter[4] = {};
+        for (std::uint32_t j = 0; j < (1u << 16); ++j) {
+            float c = float(j) / 65536.0f;
+            double p = host_p(c);
+            (host_go_on(c, float(Target::kQ[side])) ? lt : ge) += p / Target::kN16;
+            quarter[(j >> 9) & 3u] += p / Target::kN16;
+        }
+        EXPECT_NEAR(lt, tg.p_lt[side], 1e-12) << "side " << side;
+        EXPECT_NEAR(ge, tg.p_ge[side], 1e-12) << "side " << side;
+        for (int ph = 0; ph < 4; ++ph)
+            EXPECT_NEAR(quarter[ph], Target::p_phase(0, 32, ph), 1e-12) << "quarter " << ph;
+    }
+    // g s(x, 64) over the film grid, per axis (a product off the zero corner),
+    // x per (bin of 4, stripe parity), y per bin of 8.
+    std::vector<double> gx(8, 0.0), gy(8, 0.0);
+    for (std::uint32_t i = 0; i < (1u << 24); ++i) {
+        double u = i / Target::kN24, s = std::sin(2 * M_PI * u);
+        gx[(i >> 22) * 2 + ((i >> 18) & 1u)] += (1 + 3 * u) * host_sx(float(u)) / Target::kN24;
+        gy[i >> 21] += (1 + s * s) / Target::kN24;
+    }
+    for (int bx = 0; bx < 4; ++bx)
+        for (int by = 0; by < 8; ++by)
+            for (int par = 0; par < 2; ++par)
+                EXPECT_NEAR(Target::film(bx, 4, by, 8, par),
+                            bx < 1 && by < 2 ? 0.0 : gx[bx * 2 + par] * gy[by], 1e-12)
+                    << "film cell " << bx << ", " << by << ", parity " << par;
+    // The lengths' weights add up to the whole: sum_l W_l = V_0 per side.
+    for (int side = 0; side < 2; ++side) {
+        double w = 0;
+        for (int len = 1; len <= kDepth; ++len)
+            w += tg.W[len][side];
+        EXPECT_NEAR(w, tg.V[0][side], 1e-14) << "side " << side;
+    }
+    std::printf("H %.6f, E %.6f, P(go on) left %.6f right %.6f, V_0 %.6f %.6f, b = %.6f\n", tg.H,
+                tg.E, tg.p_lt[0] / (tg.p_lt[0] + tg.p_ge[0]),
+                tg.p_lt[1] / (tg.p_lt[1] + tg.p_ge[1]), tg.V[0][0], tg.V[0][1], tg.Z);
+}
+
+// The evaluator reports as live exactly the bounces whose numbers it read:
+// for fixed keys (small steps on even chains, large on odd ones, from chain
+// starts with every live count), the lazily evaluated proposal, the same
+// proposal materialized number by number and replayed, and the chain's state
+// after committing it (replayed with its live count, so any number it did not
+// store would be drawn afresh) give the same F and the same live count, bit
+// for bit (probe_lazy_eager).
+TEST(ChainTargetLazy, CommitStoresExactlyTheNumbersRead) {
+    const DeviceScene ds = layout_only_scene(target_features(), 8, 8);
+    MltOptions opt;
+    opt.threads = 4096;
+    opt.seed = 3;
+    opt.evaluator = "cl/eval_target.cl";
+    opt.extra_files = {kProbeFile};
+    MltRenderer mlt(test::cl(), ds, opt);
+    mlt.prepare();
+    mlt.step(20); // chains of every length, with stale numbers behind them
+    ClBuffer eager(test::cl(), CL_MEM_READ_WRITE, mlt.state().bytes());
+    ClBuffer out(test::cl(), CL_MEM_WRITE_ONLY, std::size_t(opt.threads) * 3 * sizeof(cl_float4));
+    SceneBuffers sb(test::cl(), ds);
+    ClKernel k(mlt.program(), "probe_lazy_eager");
+    k.set_args(sb.tris, sb.nodes, sb.mats, sb.lights, ds.frame, mlt.state(), mlt.values(), eager,
+               cl_uint(opt.threads), cl_ulong(99), out);
+    k.run(test::cl(), opt.threads);
+    std::vector<cl_float4> f(std::size_t(opt.threads) * 3);
+    out.read(test::cl(), f.data());
+    int lengths[kDepth + 1] = {}, lit = 0;
+    for (std::uint32_t c = 0; c < opt.threads; ++c) {
+        const cl_float4 &lazy = f[3 * c], &eager_f = f[3 * c + 1], &stored = f[3 * c + 2];
+        EXPECT_EQ(std::memcmp(lazy.s, eager_f.s, 16), 0) << "chain " << c;
+        EXPECT_EQ(std::memcmp(lazy.s, stored.s, 16), 0) << "chain " << c;
+        cl_uint len;
+        std::memcpy(&len, &lazy.s[3], 4);
+        ASSERT_TRUE(len >= 1 && len <= cl_uint(kDepth)) << "chain " << c;
+        ++lengths[len];
+        lit += lazy.s[0] > 0;
+    }
+    for (int len = 1; len <= kDepth; ++len)
+        EXPECT_GT(lengths[len], int(opt.threads) / 50)
+            << "too few proposals with " << len << " bounces";
+    EXPECT_GT(lit, int(opt.threads) / 4);
+}
+
+// ---------------------------------------------------------------------------
+// Chain states. C chains (K proposals each, threads = C K) start at OMC
+// burn-in picks, run `burn` steps, then S snapshots `every` steps apart read
+// the packed states (probe_chain_numbers: film numbers, a_0 = BSDF_U and
+// c_0 = FRESNEL of bounce 0, a_1 = BSDF_U of bounce 1, and the live bounces
+// L from the ChainValue). Six statistics, each a Hotelling T^2 over chains
+// against the closed-form marginal; significance 1e-3 for the test, 1e-3 / 6
+// per statistic (Bonferroni), with fixed seeds.
+//
+// Sizes: a chain's states decorrelate in about 75 steps whatever K (lag-10
+// correlation 0.88 for x, a_0 and c_0, 0.15 for L: split transitions move
+// to one of the K proposals, large ones no more often than at K = 1), so
+// every K runs a similar number of steps; K = 8 and 16 with fewer chains
+// (each step costs K proposals). The starts are burn-in picks, close to the
+// target already; two chains that start on the same pick (drawn with
+// replacement: a few percent of them) have decorrelated after the 150 burn
+// steps. The Hotelling statistic needs no thinning: the covariance of a
+// chain's counts comes from the chains themselves.
+struct ChainCase {
+    std::uint32_t proposals, chains, burn, every, snapshots;
+};
+
+class ChainTarget : public ::testing::TestWithParam<ChainCase> {};
+
+TEST_P(ChainTarget, StatesFollowTheClosedFormMarginals) {
+    const ChainCase cc = GetParam();
+    const DeviceScene ds = layout_only_scene(target_features(), 8, 8);
+    const SampleLayout& l = ds.layout;
+    const Target tg(l);
+    MltOptions opt;
+    opt.proposals = cc.proposals;
+    opt.threads = cc.chains * cc.proposals;
+    opt.large_step = 0.05f;
+    opt.seed = std::uint64_t(env_or("CT_SEED", 11)) + 1000 * cc.proposals;
+    opt.burn_in_iters = 32;
+    opt.evaluator = "cl/eval_target.cl";
+    opt.extra_files = {kProbeFile};
+    const std::uint32_t snapshots = cc.snapshots, burn = cc.burn, every = cc.every;
+
+    auto t0 = std::chrono::steady_clock::now();
+    MltRenderer mlt(test::cl(), ds, opt);
+    mlt.prepare();
+    const std::uint32_t chains = mlt.chains();
+
+    // Numbers to read: film 0, 1; bounce 0's BSDF_U and FRESNEL; bounce 1's BSDF_U.
+    auto dim = [&](int bounce, Slot s) {
+        return cl_uint(kCameraDims + bounce * l.bounce_dims + l.index[s]);
+    };
+    std::vector<cl_uint> dims = {0, 1, dim(0, kBsdfU), dim(0, kFresnel), dim(1, kBsdfU)};
+    const cl_uint n = cl_uint(dims.size());
+    ClBuffer dims_buf(test::cl(), CL_MEM_READ_ONLY, dims.size() * 4, dims.data());
+    ClBuffer out(test::cl(), CL_MEM_WRITE_ONLY, std::size_t(chains) * (n + 1) * 4);
+    ClKernel probe(mlt.program(), "probe_chain_numbers");
+    std::vector<cl_uint> row(std::size_t(chains) * (n + 1));
+
+    // The statistics and their cells (see DELIVERY.md for the formulas).
+    std::vector<CellStat> st(6);
+    st[0].name = "film: 4 x-bins x stripe parity x 8 y-bins";
+    st[0].cells = 64;
+    for (int j = 0; j < 64; ++j) {
+        int par = j % 2, bx = (j / 2) % 4, by = j / 8;
+        st[0].p.push_back(Target::film(bx, 4, by, 8, par) * tg.V[0][bx >= 2] / tg.Z);
+    }
+    st[1].name = "a_0 (24-bit): 16 bins x stripe parity";
+    st[1].cells = 32;
+    for (int j = 0; j < 32; ++j)
+        st[1].p.push_back(Target::h_stripes(4 * (j / 2), 4 * (j / 2) + 4, j % 2) / tg.H);
+    st[2].name = "c_0 (16-bit): 8 bins x phase quarter";
+    st[2].cells = 32;
+    for (int j = 0; j < 32; ++j) {
+        int t0 = 4 * (j / 4), ph = j % 4;
+        st[2].p.push_back((tg.G[0] * tg.c0_weight(t0, t0 + 4, ph, 0) +
+                           tg.G[1] * tg.c0_weight(t0, t0 + 4, ph, 1)) /
+                          tg.Z);
+    }
+    st[3].name = "live bounces L";
+    st[3].cells = kDepth;
+    for (int len = 1; len <= kDepth; ++len)
+        st[3].p.push_back((tg.G[0] * tg.W[len][0] + tg.G[1] * tg.W[len][1]) / tg.Z);
+    st[4].name = "film column x c_0 phase quarter";
+    st[4].cells = 32;
+    for (int j = 0; j < 32; ++j) {
+        int bx = j % 8, ph = j / 8, side = Target::side_of_column(bx, 8);
+        st[4].p.push_back(Target::film_column(bx, 8) * tg.c0_weight(0, 32, ph, side) / tg.Z);
+    }
+    st[5].name = "L x a_1 (24-bit): 8 bins x parity";
+    st[5].cells = 1 + (kDepth - 1) * 16;
+    st[5].p.push_back((tg.G[0] * tg.W[1][0] + tg.G[1] * tg.W[1][1]) / tg.Z);
+    for (int len = 2; len <= kDepth; ++len)
+        for (int j = 0; j < 16; ++j)
+            st[5].p.push_back((tg.G[0] * tg.W[len][0] + tg.G[1] * tg.W[len][1]) / tg.Z *
+                              Target::h_stripes(8 * (j / 2), 8 * (j / 2) + 8, j % 2) / tg.H);
+    for (auto& s : st) {
+        double sum = 0;
+        for (double p : s.p)
+            sum += p;
+        ASSERT_NEAR(sum, 1.0, 1e-12) << s.name;
+        s.counts.assign(std::size_t(chains) * s.cells, 0);
+    }
+
+    mlt.step(burn);
+    std::uint64_t at_zero = 0;
+    std::vector<cl_uint> prev;
+    const bool diag = env_or("CT_DIAG", 0) > 0;
+    // Lag correlations of (x, a_0, c_0, L) between consecutive snapshots.
+    double lag[4][5] = {}; // sums: a, b, a^2, b^2, ab
+    for (std::uint32_t snap = 0; snap < snapshots; ++snap) {
+        if (snap) mlt.step(every);
+        probe.set_args(mlt.state(), mlt.values(), cl_uint(chains), dims_buf, n, out);
+        probe.run(test::cl(), chains);
+        out.read(test::cl(), row.data());
+        if (diag && snap) {
+            const int col[4] = {0, 2, 3, 5};
+            for (std::uint32_t c = 0; c < chains; ++c)
+                for (int v = 0; v < 4; ++v) {
+                    double a = prev[std::size_t(c) * (n + 1) + col[v]],
+                           b = row[std::size_t(c) * (n + 1) + col[v]];
+                    lag[v][0] += a;
+                    lag[v][1] += b;
+                    lag[v][2] += a * a;
+                    lag[v][3] += b * b;
+                    lag[v][4] += a * b;
+                }
+        }
+        if (diag) prev = row;
+        for (std::uint32_t c = 0; c < chains; ++c) {
+            const cl_uint* r = &row[std::size_t(c) * (n + 1)];
+            cl_uint x = r[0], y = r[1], a0 = r[2], c0 = r[3], a1 = r[4], len = r[5];
+            ASSERT_TRUE(len >= 1 && len <= cl_uint(kDepth)) << "chain " << c << " L " << len;
+            // Where F = 0: the film's corner and band, a < 1/8, c >= 15/16.
+            at_zero += (x < (1u << 22) && y < (1u << 22)) || x >= (15u << 20) || a0 < (1u << 21) ||
+                       c0 >= (15u << 12) || (len >= 2 && a1 < (1u << 21));
+            std::size_t at;
+            at = std::size_t(c) * st[0].cells + ((y >> 21) * 4 + (x >> 22)) * 2 + ((x >> 18) & 1u);
+            ++st[0].counts[at];
+            cl_uint ma0 = a0 >> 18, ma1 = a1 >> 18, tc0 = c0 >> 11, qc0 = (c0 >> 9) & 3u;
+            ++st[1].counts[std::size_t(c) * st[1].cells + (ma0 >> 2) * 2 + (ma0 & 1u)];
+            ++st[2].counts[std::size_t(c) * st[2].cells + (tc0 >> 2) * 4 + qc0];
+            ++st[3].counts[std::size_t(c) * st[3].cells + len - 1];
+            ++st[4].counts[std::size_t(c) * st[4].cells + qc0 * 8 + (x >> 21)];
+            at = len == 1 ? 0 : 1 + (len - 2) * 16 + (ma1 >> 3) * 2 + (ma1 & 1u);
+            ++st[5].counts[std::size_t(c) * st[5].cells + at];
+        }
+    }
+    double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    MltStats ms = mlt.stats();
+    std::printf("K %u: %u chains, %u + %u x %u steps, %.1f s, acceptance %.1f%%\n", cc.proposals,
+                chains, burn, snapshots - 1, every, seconds,
+                100.0 * double(ms.accepted) / double(ms.mutations));
+
+    if (diag) {
+        double m = double(chains) * (snapshots - 1);
+        const char* nm[4] = {"x", "a_0", "c_0", "L"};
+        for (int v = 0; v < 4; ++v) {
+            double ma = lag[v][0] / m, mb = lag[v][1] / m;
+            double r = (lag[v][4] / m - ma * mb) /
+                       std::sqrt((lag[v][2] / m - ma * ma) * (lag[v][3] / m - mb * mb));
+            std::printf("  lag-%u correlation of %s: %.3f\n", every, nm[v], r);
+        }
+        std::printf("  %s\n", mlt.summary(0).c_str());
+    }
+    EXPECT_EQ(at_zero, 0u) << "chain states where the target is zero";
+    const double alpha = 1e-3 / st.size();
+    for (const auto& s : st) {
+        Verdict v = hotelling(s, chains, snapshots, alpha);
+        std::printf("  %-36s T2 %9.1f (q %2d, limit %6.1f)  p %.3g\n", s.name.c_str(), v.t2, v.q,
+                    v.limit, v.p_value);
+        EXPECT_EQ(v.in_zero_cells, 0u) << s.name << ": states where the target is zero";
+        EXPECT_GT(v.p_value, alpha) << s.name << ": T2 " << v.t2 << " over " << v.limit;
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(Proposals, ChainTarget,
+                         ::testing::Values(ChainCase{1, 4096, 150, 10, 70},
+                                           ChainCase{2, 2048, 150, 10, 60},
+                                           ChainCase{4, 2048, 150, 10, 50},
+                                           ChainCase{8, 1024, 150, 10, 60},
+                                           ChainCase{16, 1024, 150, 10, 50}));
+
+// ---------------------------------------------------------------------------
+// The splatted image, b * splats * pixels / mutations, against the target's
+// per-pixel integral, pixels * sum_{pixel} g / N24^2 * V_0(side), on a 4 x 4
+// film. R independent renders (own seeds: own b, burn-in and steps) give R
+// values of each quantity below; with their mean m and standard deviation s,
+// t = (m - truth) / (s / sqrt R) is t-distributed with R - 1 degrees of
+// freedom for an unbiased render (each value is a sum of many splats: close
+// to normal). Quantities: the 15 lit pixels of image(); the image mean (a
+// bias shared by all pixels: the splat weights); and the 15 lit pixels of
+// image() / b, against truth / b_true (where the chains went, without b's own
+// noise, which is common to all pixels of one render and dominates them).
+// 31 two-sided tests at 1e-3 / 31 each (Bonferroni: 1e-3 for the test). The
+// pixel where the target is zero must get exactly nothing.
+struct SplatCase {
+    std::uint32_t proposals, threads, steps, replicas;
+};
+
+class ChainTargetSplat : public ::testing::TestWithParam<SplatCase> {};
+
+TEST_P(ChainTargetSplat, ImageMatchesThePerPixelIntegral) {
+    const SplatCase sc = GetParam();
+    const int bins = 4, pixels = bins * bins, values = 2 * pixels + 1;
+    const DeviceScene ds = layout_only_scene(target_features(), bins, bins);
+    const Target tg(ds.layout);
+    const std::uint32_t replicas = sc.replicas;
+    // Value i < pixels: pixel i of image(); i = pixels: the image mean;
+    // pixels + 1 + j: pixel j of image() / b.
+    std::vector<double> sum(values, 0.0), sum2(values, 0.0), truth(values, 0.0);
+    for (int i = 0; i < pixels; ++i) {
+        truth[i] = tg.pixel(i % bins, i / bins, bins);
+        truth[pixels] += truth[i] / pixels;
+        truth[pixels + 1 + i] = truth[i] / tg.Z;
+    }
+    EXPECT_NEAR(truth[pixels], tg.Z, 1e-12 * tg.Z);
+    auto t0 = std::chrono::steady_clock::now();
+    double acceptance = 0, b_error = 0;
+    for (std::uint32_t r = 0; r < replicas; ++r) {
+        MltOptions opt;
+        opt.proposals = sc.proposals;
+        opt.threads = sc.threads;
+        opt.large_step = 0.05f;
+        opt.seed = std::uint64_t(env_or("CT_SEED", 11)) * 7919 + 100 * sc.proposals + r;
+        opt.burn_in_iters = 32;
+        opt.evaluator = "cl/eval_target.cl";
+        MltRenderer mlt(test::cl(), ds, opt);
+        mlt.prepare();
+        mlt.step(sc.steps);
+        MltStats ms = mlt.stats();
+        acceptance += double(ms.accepted) / double(ms.mutations) / replicas;
+        b_error += mlt.b_rel_error() / replicas;
+        Image img = mlt.image();
+        std::vector<double> v(values, 0.0);
+        for (int i = 0; i < pixels; ++i) {
+            v[i] = img.rgb[3 * i];
+            v[pixels] += v[i] / pixels;
+            v[pixels + 1 + i] = v[i] / mlt.b();
+        }
+        for (int i = 0; i < values; ++i) {
+            sum[i] += v[i];
+            sum2[i] += v[i] * v[i];
+        }
+    }
+    double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    const int tests = 2 * (pixels - 1) + 1;
+    const double alpha = 1e-3 / tests, nu = replicas - 1.0;
+    const double t_limit = critical([&](double t) { return t_two_sided(t, nu); }, alpha, 4.0);
+    std::printf(
+        "K %u: %u replicas, %.1f s, acceptance %.1f%%, b +-%.2f%% a render; |t| limit %.2f\n",
+        sc.proposals, replicas, seconds, 100 * acceptance, 100 * b_error, t_limit);
+    const bool diag = env_or("CT_DIAG", 0) > 0;
+    double worst[3] = {0, 0, 0};
+    int worst_at[3] = {-1, -1, -1};
+    for (int i = 0; i < values; ++i) {
+        const int group = i < pixels ? 0 : i == pixels ? 1 : 2;
+        const std::string what = group == 0   ? "pixel " + std::to_string(i)
+                                 : group == 1 ? std::string("image mean")
+                                              : "pixel / b " + std::to_string(i - pixels - 1);
+        double mean = sum[i] / replicas;
+        if (truth[i] == 0) {
+            EXPECT_EQ(sum[i], 0.0) << what << ": splats where the target is zero";
+            continue;
+        }
+        double var = (sum2[i] - replicas * mean * mean) / (replicas - 1);
+        double se = std::sqrt(std::max(var, 0.0) / replicas);
+        ASSERT_GT(se, 0.0) << what;
+        double t = (mean - truth[i]) / se;
+        if (std::fabs(t) > std::fabs(worst[group])) {
+            worst[group] = t;
+            worst_at[group] = group == 2 ? i - pixels - 1 : i;
+        }
+        if (diag) std::printf("  t %s %.3f\n", what.c_str(), t);
+        if (group == 1)
+            std::printf("  image mean %.5f, truth %.5f (%+.2f%%, se %.2f%%), t %.2f\n", mean,
+                        truth[i], 100 * (mean / truth[i] - 1), 100 * se / truth[i], t);
+        EXPECT_LT(std::fabs(t), t_limit)
+            << what << ": mean " << mean << ", truth " << truth[i] << ", t " << t;
+    }
+    std::printf("  worst t: pixels %.2f (at %d), pixels / b %.2f (at %d)\n", worst[0], worst_at[0],
+                worst[2], worst_at[2]);
+}
+
+INSTANTIATE_TEST_SUITE_P(Proposals, ChainTargetSplat,
+                         ::testing::Values(SplatCase{1, 2048, 150, 16},
+                                           SplatCase{4, 2048, 150, 16}));
