@@ -1,7 +1,6 @@
 // Primary-sample-space MLT: packed storage is exact, lazy proposals are the
-// eager ones, the sampler reproduces a known target, and renders agree with
-// path tracing.
-#include "image/image_metrics.hpp"
+// eager ones, the sampler reproduces a known target, and storage precision
+// does not bias renders (renders against path tracing: test_render_blocks.cpp).
 #include "render/mlt.hpp"
 #include "scene/sample_layout.hpp"
 #include "test_support.hpp"
@@ -10,7 +9,6 @@
 
 #include <cmath>
 #include <cstring>
-#include <map>
 #include <random>
 
 using namespace smallmlt;
@@ -244,66 +242,8 @@ TEST(MltSplat, SplatImageMatchesTheTarget) {
     EXPECT_LT(t_stat, limit) << "sum of squared z over " << used << " bins";
 }
 
-namespace {
-
-// Path-traced reference: 32 x 32 pixels at 2048 samples each (2.1 M paths,
-// a relative standard error of the image mean near 0.2% on these scenes).
-// Cached per scene: several cases share one.
-const Image& reference(const std::string& name, const DeviceScene& ds) {
-    static std::map<std::string, Image> cache;
-    auto it = cache.find(name);
-    if (it == cache.end()) it = cache.emplace(name, test::render_pt(ds, 4242, 2048)).first;
-    return it->second;
-}
-
-} // namespace
-
-// The MLT image mean is b times the fraction of mutations that splat, and b
-// is an OMC estimate of the film's mean. With 2^21 samples for b (relative
-// standard error 0.36% on cornell, 0.47% on cornell-glass, 0.64% on
-// cornell-water, as the renderer reports) and the reference above (0.2-0.4%),
-// the means must agree within 1%: 2.4, 1.8 and 1.3 combined standard errors
-// on these scenes, so the test catches a bias of a few percent, not less. The
-// error against the reference must fall as the chains run.
-struct RenderCase {
-    const char* scene;
-    std::uint32_t proposals;
-};
-
-class MltRender : public ::testing::TestWithParam<RenderCase> {};
-
-TEST_P(MltRender, MeanMatchesPathTracingAndErrorFalls) {
-    const char* name = GetParam().scene;
-    DeviceScene ds = prepare_scene(test::scene(name, 32, 32));
-    const Image& ref = reference(name, ds);
-    MltOptions opt;
-    opt.threads = 4096;
-    opt.proposals = GetParam().proposals;
-    opt.seed = 7;
-    opt.burn_in_iters = 512; // b from 2^21 samples
-    MltRenderer mlt(test::cl(), ds, opt);
-    mlt.prepare();
-    std::vector<double> errors;
-    for (std::uint32_t steps : {8u, 24u, 96u}) {
-        mlt.step(steps);
-        errors.push_back(image_mse(mlt.image(), ref));
-    }
-    double m = mlt.image().mean_luminance(), r = ref.mean_luminance();
-    std::printf("%s: b %.5f (+-%.2f%%), MLT mean %.5f, PT mean %.5f, MSE %.4g %.4g %.4g\n", name,
-                mlt.b(), 100 * mlt.b_rel_error(), m, r, errors[0], errors[1], errors[2]);
-    EXPECT_NEAR(m, r, 0.01 * r);
-    EXPECT_LT(mlt.b_rel_error(), 0.007) << "b noisier than this test was designed for";
-    EXPECT_GT(errors[0], errors[1]);
-    EXPECT_GT(errors[1], errors[2]);
-}
-
-// K = 1 on cornell and cornell-glass; split transitions (K = 2, 4) on cornell
-// and cornell-water.
-INSTANTIATE_TEST_SUITE_P(Scenes, MltRender,
-                         ::testing::Values(RenderCase{"cornell", 1}, RenderCase{"cornell-glass", 1},
-                                           RenderCase{"cornell", 2}, RenderCase{"cornell", 4},
-                                           RenderCase{"cornell-water", 2},
-                                           RenderCase{"cornell-water", 4}));
+// MLT renders against PT, block by block, and b against PT's mean:
+// test_render_blocks.cpp.
 
 // Storage precision does not bias: renders with packed 24/16-bit states and
 // with unpacked float32 states (same kernel, PSS_FLOAT32) differ only by

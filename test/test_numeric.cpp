@@ -123,6 +123,7 @@ TEST(Numeric, UncertainBIsReportedAndTheMeanStillTracksPt) {
         EXPECT_GT(mlt.b_rel_error(), kMaxBRelError);
         ASSERT_FALSE(mlt.notes().empty());
         EXPECT_NE(mlt.notes()[0].find("few OMC samples carried light"), std::string::npos);
+        // The image mean is b (burn-in starts every chain on a lit path): this checks b.
         EXPECT_LT(std::abs(mean - pt_mean) / pt_mean, 4 * mlt.b_rel_error() + 0.02);
     }
 }

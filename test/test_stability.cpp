@@ -3,7 +3,9 @@
 // can address keeps its image, and large K, extreme thread counts and
 // truncated paths give PT's image. Every comparison with PT checks the mean
 // (which b sets) and each quadrant's share of the light (where the chains
-// went), with the fixed seeds and tolerances stated beside each test.
+// went), with the fixed seeds and tolerances stated beside each test. These
+// catch gross errors only; test_render_blocks.cpp compares MLT with PT block
+// by block against the measured noise.
 #include "device/memory_plan.hpp"
 #include "device/scan.hpp"
 #include "render/mlt.hpp"
@@ -47,7 +49,9 @@ MltRun run_mlt(const DeviceScene& ds, const MltOptions& opt, std::uint32_t steps
 
 // The MLT image's mean is within 4 standard errors of b plus 1% (the
 // reference's own noise and rounding) of PT's, and every quadrant's share of
-// the light within `share_tol` (relative) of PT's.
+// the light within `share_tol` (relative) of PT's. With burn-in every chain
+// sits on a lit path and a step's splat weights sum to its work-items, so
+// the image mean is b: the mean check checks b against PT.
 void expect_tracks_pt(const MltRun& run, const Image& pt, double share_tol) {
     double m = run.image.mean_luminance(), r = pt.mean_luminance();
     std::printf("  mean %.5f, PT %.5f (%+.2f%%, b +-%.2f%%), shares", m, r, 100 * (m / r - 1),
@@ -171,6 +175,8 @@ TEST(ZeroContribution, MostlyBlackSceneConvergesToThePtMean) {
     MltRenderer mlt(test::cl(), ds, opt);
     mlt.prepare();
     mlt.step(4);
+    // Not b: without burn-in, a chain on a black path whose proposal is black
+    // too splats nothing, so the mean measures how many chains found light.
     double early = mlt.image().mean_luminance(), r = reference("ajar").mean_luminance();
     mlt.step(196);
     double late = mlt.image().mean_luminance();
@@ -235,6 +241,7 @@ TEST(ManyLights, WidenedLightPickKeepsTheImage) {
     const Image& pt = reference("cornell");
     Image many = test::render_pt(ds, 77, 512);
     double m = many.mean_luminance(), r = pt.mean_luminance();
+    // PT against PT: a real comparison of means (no b involved).
     std::printf("PT, %zu lights: mean %.5f, 2 lights %.5f\n", ds.lights.size(), m, r);
     EXPECT_NEAR(m, r, 0.01 * r);
     auto q = test::quadrant_shares(many), qr = test::quadrant_shares(pt);

@@ -11,6 +11,7 @@
 #include <cstdio>
 #include <fstream>
 #include <string>
+#include <vector>
 
 namespace smallmlt::test {
 
@@ -34,6 +35,31 @@ inline Image render_pt(const DeviceScene& ds, std::uint64_t seed, std::uint32_t 
     PathTracer pt(cl(), ds, seed);
     pt.add_samples(spp);
     return pt.image();
+}
+
+// `batches` path-traced images of `ds`, each the mean of `spp / batches`
+// samples per pixel of one render (seed `seed`): independent replicas, since
+// a render's samples are numbered and never repeat. A batch is the difference
+// of the running sums before and after it.
+inline std::vector<Image> render_pt_batches(const DeviceScene& ds, std::uint64_t seed,
+                                            std::uint32_t spp, int batches) {
+    PathTracer pt(cl(), ds, seed);
+    const std::uint32_t per = spp / std::uint32_t(batches);
+    std::vector<Image> out;
+    std::vector<double> before;
+    for (int k = 0; k < batches; ++k) {
+        pt.add_samples(per);
+        Image img = pt.image();
+        before.resize(img.rgb.size(), 0.0);
+        Image batch(img.width, img.height);
+        for (std::size_t i = 0; i < img.rgb.size(); ++i) {
+            double sum = double(img.rgb[i]) * pt.spp();
+            batch.rgb[i] = float((sum - before[i]) / per);
+            before[i] = sum;
+        }
+        out.push_back(batch);
+    }
+    return out;
 }
 
 // A scratch directory under build/, emptied per call site.
