@@ -1,7 +1,7 @@
-// Statistics for the render tests (test/test_render_blocks.cpp): normal and
+// Statistics shared by the tests: the chi-square critical value, normal and
 // Student t tails and quantiles, Holm's step-down correction, block sums of
 // an image, and Welch's t per block between two sets of independent
-// replicas.
+// replicas (test/test_render_blocks.cpp).
 #pragma once
 #include "image/image.hpp"
 
@@ -13,6 +13,16 @@
 #include <vector>
 
 namespace smallmlt::test {
+
+// Upper critical value of chi-square with `df` degrees of freedom at
+// significance 0.001: exact for 1 and 2, Wilson-Hilferty above (within a
+// fraction of a percent for df > 30).
+inline double chi2_critical_001(double df) {
+    if (df == 1) return 10.828;
+    if (df == 2) return 13.816;
+    const double z = 3.0902, a = 2.0 / (9.0 * df); // z: standard normal quantile at 0.999
+    return df * std::pow(1.0 - a + z * std::sqrt(a), 3.0);
+}
 
 // P(Z > z) for a standard normal Z.
 inline double normal_upper_tail(double z) {

@@ -5,6 +5,7 @@
 // DELIVERY.md (or the comments below) gives the derivations.
 #include "render/mlt.hpp"
 #include "scene/sample_layout.hpp"
+#include "stats.hpp"
 #include "test_support.hpp"
 
 #include <gtest/gtest.h>
@@ -32,15 +33,6 @@ SceneFeatures target_features() {
     f.dielectric = true;
     f.depth = kDepth;
     return f;
-}
-
-DeviceScene layout_only_scene(const SceneFeatures& f, int width, int height) {
-    DeviceScene ds;
-    ds.layout = make_layout(f);
-    ds.frame.width = width;
-    ds.frame.height = height;
-    ds.frame.depth = f.depth;
-    return ds;
 }
 
 // ---------------------------------------------------------------------------
@@ -408,7 +400,7 @@ TEST(ChainTargetMath, ClosedFormsEqualGridSums) {
 // store would be drawn afresh) give the same F and the same live count, bit
 // for bit (probe_lazy_eager).
 TEST(ChainTargetLazy, CommitStoresExactlyTheNumbersRead) {
-    const DeviceScene ds = layout_only_scene(target_features(), 8, 8);
+    const DeviceScene ds = test::layout_only_scene(target_features(), 8, 8);
     MltOptions opt;
     opt.threads = 4096;
     opt.seed = 3;
@@ -469,7 +461,7 @@ class ChainTarget : public ::testing::TestWithParam<ChainCase> {};
 
 TEST_P(ChainTarget, StatesFollowTheClosedFormMarginals) {
     const ChainCase cc = GetParam();
-    const DeviceScene ds = layout_only_scene(target_features(), 8, 8);
+    const DeviceScene ds = test::layout_only_scene(target_features(), 8, 8);
     const SampleLayout& l = ds.layout;
     const Target tg(l);
     MltOptions opt;
@@ -644,7 +636,7 @@ class ChainTargetSplat : public ::testing::TestWithParam<SplatCase> {};
 TEST_P(ChainTargetSplat, ImageMatchesThePerPixelIntegral) {
     const SplatCase sc = GetParam();
     const int bins = 4, pixels = bins * bins, values = 2 * pixels + 1;
-    const DeviceScene ds = layout_only_scene(target_features(), bins, bins);
+    const DeviceScene ds = test::layout_only_scene(target_features(), bins, bins);
     const Target tg(ds.layout);
     const std::uint32_t replicas = sc.replicas;
     // Value i < pixels: pixel i of image(); i = pixels: the image mean;

@@ -3,6 +3,7 @@
 // does not bias renders (renders against path tracing: test_render_blocks.cpp).
 #include "render/mlt.hpp"
 #include "scene/sample_layout.hpp"
+#include "stats.hpp"
 #include "test_support.hpp"
 
 #include <gtest/gtest.h>
@@ -17,26 +18,6 @@ namespace {
 
 const char* kProbeFile = "cl/kernels_probe_mlt.cl";
 
-// A scene with no geometry whose layout is `f`: enough for probe kernels and
-// for the known-target evaluator.
-DeviceScene layout_only_scene(const SceneFeatures& f, int width, int height) {
-    DeviceScene ds;
-    ds.layout = make_layout(f);
-    ds.frame.width = width;
-    ds.frame.height = height;
-    ds.frame.depth = f.depth;
-    return ds;
-}
-
-// Upper critical value of chi-square with `df` degrees of freedom at
-// significance 0.001 (Wilson-Hilferty; accurate to a fraction of a percent
-// for df > 30).
-double chi2_critical_001(double df) {
-    const double z = 3.0902; // standard normal quantile at 0.999
-    double a = 2.0 / (9.0 * df);
-    return df * std::pow(1.0 - a + z * std::sqrt(a), 3.0);
-}
-
 std::uint32_t bits_of(const SampleLayout& l, std::uint32_t d) {
     if (d < std::uint32_t(kCameraDims)) return kHighBits;
     std::uint32_t slot_index = (d - kCameraDims) % l.bounce_dims;
@@ -46,7 +27,7 @@ std::uint32_t bits_of(const SampleLayout& l, std::uint32_t d) {
 }
 
 void check_roundtrip(const SceneFeatures& f, bool float32) {
-    DeviceScene ds = layout_only_scene(f, 4, 4);
+    DeviceScene ds = test::layout_only_scene(f, 4, 4);
     MltOptions opt;
     opt.threads = 16;
     opt.float32_states = float32;
@@ -147,7 +128,7 @@ class MltSampler : public ::testing::TestWithParam<std::uint32_t> {};
 
 TEST_P(MltSampler, ChainStatesFollowAKnownTarget) {
     const int bins = 16;
-    DeviceScene ds = layout_only_scene({}, bins, bins);
+    DeviceScene ds = test::layout_only_scene({}, bins, bins);
     MltOptions opt;
     opt.proposals = GetParam();
     opt.threads = (opt.proposals <= 4 ? 16384 : 4096) * opt.proposals;
@@ -184,7 +165,7 @@ TEST_P(MltSampler, ChainStatesFollowAKnownTarget) {
             chi2 += (n - e) * (n - e) / e;
             ++df;
         }
-    EXPECT_LT(chi2, chi2_critical_001(df)) << "df " << df;
+    EXPECT_LT(chi2, test::chi2_critical_001(df)) << "df " << df;
 }
 
 INSTANTIATE_TEST_SUITE_P(Proposals, MltSampler, ::testing::Values(1u, 2u, 4u, 8u, 16u));
@@ -198,7 +179,7 @@ INSTANTIATE_TEST_SUITE_P(Proposals, MltSampler, ::testing::Values(1u, 2u, 4u, 8u
 // where the target is zero get exactly nothing.
 TEST(MltSplat, SplatImageMatchesTheTarget) {
     const int bins = 16, replicas = 16;
-    DeviceScene ds = layout_only_scene({}, bins, bins);
+    DeviceScene ds = test::layout_only_scene({}, bins, bins);
     std::vector<double> sum(bins * bins, 0.0), sum2(bins * bins, 0.0);
     for (int r = 0; r < replicas; ++r) {
         MltOptions opt;

@@ -4,6 +4,7 @@
 // from fixed streams on the device, bins what it drew into cells of equal
 // probability under the density the routine claims, and rejects at
 // significance 1e-3 per test (fixed seeds: a pass is repeatable).
+#include "stats.hpp"
 #include "test_support.hpp"
 
 #include <gtest/gtest.h>
@@ -16,15 +17,6 @@ using namespace smallmlt;
 namespace {
 
 const double kPi = 3.14159265358979323846;
-
-// Upper critical value of chi-square with `df` degrees of freedom at
-// significance 1e-3 (Wilson-Hilferty; within a fraction of a percent for
-// df > 30).
-double chi2_critical_001(double df) {
-    const double z = 3.0902; // standard normal quantile at 0.999
-    double a = 2.0 / (9.0 * df);
-    return df * std::pow(1.0 - a + z * std::sqrt(a), 3.0);
-}
 
 // Pearson's statistic of counts against expected counts (all > 0).
 double chi2(const std::vector<double>& observed, const std::vector<double>& expected) {
@@ -128,7 +120,7 @@ TEST(LightPick, DeviceFrequenciesFollowTheProbabilities) {
     for (std::size_t i = 0; i < ds.lights.size(); ++i)
         expected[i] = n * double(ds.tris[ds.lights[i].triangle].light_pick_prob);
     double t = chi2(observed, expected);
-    EXPECT_LT(t, chi2_critical_001(double(ds.lights.size() - 1))) << "chi-square " << t;
+    EXPECT_LT(t, test::chi2_critical_001(double(ds.lights.size() - 1))) << "chi-square " << t;
 }
 
 // light_sample_tri puts points uniformly on the triangle. Cells of equal
@@ -172,7 +164,7 @@ TEST(LightSampling, PointsAreUniformOnTheTriangle) {
             observed[i * side + j] += 1;
         }
         double stat = chi2(observed, expected);
-        EXPECT_LT(stat, chi2_critical_001(side * side - 1))
+        EXPECT_LT(stat, test::chi2_critical_001(side * side - 1))
             << "light " << light << ": chi-square " << stat;
     }
 }
@@ -215,7 +207,7 @@ TEST(DiffuseSampling, DirectionsAreCosineWeighted) {
         worst_pdf = std::max(worst_pdf, std::fabs(w.s[3] - std::max(c, 0.0) / kPi));
     }
     double stat = chi2(observed, expected);
-    EXPECT_LT(stat, chi2_critical_001(side * side - 1)) << "chi-square " << stat;
+    EXPECT_LT(stat, test::chi2_critical_001(side * side - 1)) << "chi-square " << stat;
     EXPECT_LT(worst_pdf, 1e-5) << "pdf_w is not cos(theta) / pi";
 }
 

@@ -4,6 +4,7 @@
 // stores, for every slot width (24, 16 and a widened 17-bit light pick).
 #include "render/mlt.hpp"
 #include "scene/sample_layout.hpp"
+#include "stats.hpp"
 #include "test_support.hpp"
 
 #include <gtest/gtest.h>
@@ -17,14 +18,6 @@ using namespace smallmlt;
 namespace {
 
 const char* kProbeFile = "cl/kernels_probe_mlt.cl";
-
-DeviceScene layout_only_scene(const SceneFeatures& f) {
-    DeviceScene ds;
-    ds.layout = make_layout(f);
-    ds.frame.width = ds.frame.height = 4;
-    ds.frame.depth = f.depth;
-    return ds;
-}
 
 // Features whose layout has 24-bit (film, BSDF, light) and 16-bit (Fresnel,
 // roulette) slots, and a light pick of 16 bits (<= 256 lights) or 17 (300).
@@ -50,7 +43,7 @@ double reference_delta(std::uint32_t r, int bits) {
 // one step, its size does not depend on the sign bit, and the move with the
 // sign bit flipped is the mirror image (v + d and v - d, modulo 2^bits).
 TEST(SmallStep, IntegerDeltaFollowsTheExponentialAndIsSymmetric) {
-    DeviceScene ds = layout_only_scene(features(300));
+    DeviceScene ds = test::layout_only_scene(features(300));
     MltOptions opt;
     opt.threads = 64;
     opt.extra_files = {kProbeFile};
@@ -117,7 +110,7 @@ struct CommitRun {
 
 CommitRun run_commit(std::uint32_t lights) {
     CommitRun run;
-    DeviceScene ds = layout_only_scene(features(lights));
+    DeviceScene ds = test::layout_only_scene(features(lights));
     run.layout = ds.layout;
     run.dims = std::uint32_t(ds.layout.vector_dims());
     MltOptions opt;

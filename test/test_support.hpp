@@ -30,6 +30,17 @@ inline Scene scene(const std::string& name, int width, int height, int depth = -
     return s;
 }
 
+// A scene with no geometry whose sample layout is `f`: enough for probe
+// kernels and for the known-target evaluator (cl/eval_target.cl).
+inline DeviceScene layout_only_scene(const SceneFeatures& f, int width = 4, int height = 4) {
+    DeviceScene ds;
+    ds.layout = make_layout(f);
+    ds.frame.width = width;
+    ds.frame.height = height;
+    ds.frame.depth = f.depth;
+    return ds;
+}
+
 // Path-traced image of `ds` at `spp` samples per pixel.
 inline Image render_pt(const DeviceScene& ds, std::uint64_t seed, std::uint32_t spp) {
     PathTracer pt(cl(), ds, seed);
