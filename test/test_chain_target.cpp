@@ -409,15 +409,7 @@ TEST(ChainTargetLazy, CommitStoresExactlyTheNumbersRead) {
     MltRenderer mlt(test::cl(), ds, opt);
     mlt.prepare();
     mlt.step(20); // chains of every length, with stale numbers behind them
-    ClBuffer eager(test::cl(), CL_MEM_READ_WRITE, mlt.state().bytes());
-    ClBuffer out(test::cl(), CL_MEM_WRITE_ONLY, std::size_t(opt.threads) * 3 * sizeof(cl_float4));
-    SceneBuffers sb(test::cl(), ds);
-    ClKernel k(mlt.program(), "probe_lazy_eager");
-    k.set_args(sb.tris, sb.nodes, sb.mats, sb.lights, ds.frame, mlt.state(), mlt.values(), eager,
-               cl_uint(opt.threads), cl_ulong(99), out);
-    k.run(test::cl(), opt.threads);
-    std::vector<cl_float4> f(std::size_t(opt.threads) * 3);
-    out.read(test::cl(), f.data());
+    std::vector<cl_float4> f = test::lazy_eager_committed(mlt, ds, opt.threads);
     int lengths[kDepth + 1] = {}, lit = 0;
     for (std::uint32_t c = 0; c < opt.threads; ++c) {
         const cl_float4 &lazy = f[3 * c], &eager_f = f[3 * c + 1], &stored = f[3 * c + 2];

@@ -3,6 +3,8 @@
 #pragma once
 #include "device/ocl.hpp"
 #include "image/image.hpp"
+#include "device/scene_buffers.hpp"
+#include "render/mlt.hpp"
 #include "render/path_tracer.hpp"
 #include "scene/device_scene.hpp"
 #include "scene/scene.hpp"
@@ -71,6 +73,24 @@ inline std::vector<Image> render_pt_batches(const DeviceScene& ds, std::uint64_t
         out.push_back(batch);
     }
     return out;
+}
+
+// Runs probe_lazy_eager (cl/kernels_probe_mlt.cl, which `mlt` must have
+// been built with) on every chain with proposal key seed 99: per chain the
+// lazily evaluated proposal, the same materialized and replayed, and the
+// committed state replayed (F, live bounces in w).
+inline std::vector<cl_float4> lazy_eager_committed(const MltRenderer& mlt, const DeviceScene& ds,
+                                                   std::uint32_t chains) {
+    ClBuffer eager(cl(), CL_MEM_READ_WRITE, mlt.state().bytes());
+    ClBuffer out(cl(), CL_MEM_WRITE_ONLY, std::size_t(chains) * 3 * sizeof(cl_float4));
+    SceneBuffers sb(cl(), ds);
+    ClKernel k(mlt.program(), "probe_lazy_eager");
+    k.set_args(sb.tris, sb.nodes, sb.mats, sb.lights, ds.frame, mlt.state(), mlt.values(), eager,
+               cl_uint(chains), cl_ulong(99), out);
+    k.run(cl(), chains);
+    std::vector<cl_float4> f(std::size_t(chains) * 3);
+    out.read(cl(), f.data());
+    return f;
 }
 
 // A scratch directory under build/, emptied per call site.
