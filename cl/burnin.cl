@@ -1,10 +1,14 @@
-/* Burn-in by ordinary Monte Carlo (Frolov and Galaktionov, section 3.1): of
- * the n OMC samples of one round, keep picks chosen with probability
- * proportional to their luminance, by binary search in the inclusive prefix
- * sum (scan.cl) of their weights: the luminances in 64-bit fixed point, so
- * the sums are exact and a sample keeps its share however small it is next
- * to the total. A kept sample is kept as its index i in the round: the key
- * rng_key(round seed, i, 0) regenerates its path. */
+/* Burn-in by ordinary Monte Carlo (Frolov and Galaktionov, section 3.1),
+ * pooled over rounds by a weighted reservoir: T rounds of n OMC samples
+ * each, one round in memory at a time; in round r every chain replaces its
+ * pick, with probability s_r / (s_0 + .. + s_r) (s: a round's luminance
+ * sum), by a sample of round r drawn in proportion to luminance. Each
+ * chain's start is then an independent draw from all T n samples in
+ * proportion to luminance. The draw within a round is a binary search in the
+ * inclusive prefix sum (scan.cl) of the weights: the luminances in 64-bit
+ * fixed point, so the sums are exact and a sample keeps its share however
+ * small it is next to the total. A pick is kept as (round r, index i): the
+ * key rng_key(omc_round_seed(r), i, 0) regenerates its path. */
 
 /* Fixed-point weight of each luminance: lum * 2^exponent rounded to nearest,
  * at least 1 if lum > 0, 0 if lum is 0 or not finite. The host picks the
@@ -31,19 +35,22 @@ inline uint burnin_search(const __global ulong* scan, uint n, ulong u) {
     return lo;
 }
 
-/* Pick j of `count` (j = get_global_id(0)) from the n samples whose weights
- * `scan` sums; writes the picked index to picks[first_pick + j]. u =
- * floor(r total / 2^64) for r, 64 bits of the pick's stream: (b - a) 2^64 /
- * total values of r, give or take one, map into [a, b), so sample i is
- * picked with probability weight_i / total within 2^-64, and a zero-weight
- * sample never is. If the round found no light, picks are
- * uniform (such chains accept any proposal that finds some). */
+/* Chain j of `count` (j = get_global_id(0)) replaces its pick picks[j] with
+ * probability replace / 2^32 (replace = 2^32: always) by a sample of this
+ * round, (round, i), drawn from the n samples whose weights `scan` sums. The
+ * streams are those of key rng_key(seed, j, round): dimension 2 decides the
+ * replacement; u = floor(r total / 2^64) for r, dimensions 0 and 1 (64
+ * bits): (b - a) 2^64 / total values of r, give or take one, map into
+ * [a, b), so sample i is drawn with probability weight_i / total within
+ * 2^-64, and a zero-weight sample never is. If the round found no light, the
+ * draw is uniform (such chains accept any proposal that finds some). */
 __kernel void burnin_pick(__global const ulong* scan, const uint n, const ulong seed,
-                          const uint round, const uint first_pick, const uint count,
-                          __global uint* picks) {
+                          const uint round, const ulong replace, const uint count,
+                          __global uint2* picks) {
     uint j = get_global_id(0);
     if (j >= count) return;
-    ulong key = rng_key(seed, first_pick + j, round);
+    ulong key = rng_key(seed, j, round);
+    if ((ulong)rng_u32(key, 2u) >= replace) return;
     uint hi = rng_u32(key, 0u);
     ulong total = scan[n - 1u];
     uint i;
@@ -51,5 +58,5 @@ __kernel void burnin_pick(__global const ulong* scan, const uint n, const ulong 
         i = burnin_search(scan, n, mul_hi(((ulong)hi << 32) | rng_u32(key, 1u), total));
     else
         i = (uint)(((ulong)hi * n) >> 32);
-    picks[first_pick + j] = i;
+    picks[j] = (uint2)(round, i);
 }

@@ -18,17 +18,21 @@ __kernel void mlt_luminance(__global const Triangle* tris, __global const BvhNod
     lum[i] = path_luminance(s.f);
 }
 
-/* Starts chain c at the OMC path of sample picks[c]: the path of key
- * rng_key(seed, picks[c], 0), as mlt_luminance drew it. */
+/* Starts chain c at the OMC path of sample picks[c] = (round r, index i):
+ * the path of key rng_key(round seed, i, 0), as mlt_luminance drew it, where
+ * the round seed is omc_round_seed(omc_seed, r) (src/render/mlt.cpp). */
 __kernel void mlt_init(__global const Triangle* tris, __global const BvhNode* nodes,
                        __global const Material* mats, __global const LightEntry* lights,
                        const Frame frame, __global uint* state, __global ChainValue* values,
-                       const uint num_chains, const ulong seed, __global const uint* picks,
+                       const uint num_chains, const ulong omc_seed, __global const uint2* picks,
                        __global ulong* stats) {
     uint c = get_global_id(0);
     if (c >= num_chains) return;
     SceneView sc = path_scene(tris, nodes, mats, lights, &frame);
-    SampleSource src = smp_chain(state, c, num_chains, rng_key(seed, picks[c], 0u), SMP_LARGE, 0u);
+    uint2 pick = picks[c];
+    ulong round_seed = rng_mix64(omc_seed * 0x9E3779B97F4A7C15UL + (ulong)pick.x);
+    SampleSource src =
+        smp_chain(state, c, num_chains, rng_key(round_seed, pick.y, 0u), SMP_LARGE, 0u);
     EvalResult s = mlt_checked(eval_state(&sc, &frame, &src), stats);
     smp_commit(&src, s.bounces);
     values[c] = chain_started(s.f, s.bounces);

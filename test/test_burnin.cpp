@@ -104,20 +104,32 @@ TEST(Scan, Ulong64BitInputMatchesHostExactlyInPlace) {
 
 namespace {
 
-// Picks `count` indices from luminances w as the burn-in does (BurnInPicker:
-// fixed-point weights, scan, binary search); *scan_out receives the scan.
+// The burn-in's program: rng, the 64-bit scan and the picks.
+cl_program build_burnin() {
+    const ClContext& cl = test::cl();
+    return cl.build({"cl/rng.cl", "cl/scan.cl", "cl/burnin.cl"}, scan_defines(cl.device()));
+}
+
+// Picks `count` indices from luminances w as the burn-in's first round does
+// (BurnInPicker: fixed-point weights, scan, binary search; the first round
+// replaces every pick); *scan_out receives the scan.
 std::vector<cl_uint> pick(const std::vector<float>& w, std::uint32_t count,
                           std::vector<cl_ulong>* scan_out = nullptr) {
     const ClContext& cl = test::cl();
-    ClProgram prog(
-        cl.build({"cl/rng.cl", "cl/scan.cl", "cl/burnin.cl"}, scan_defines(cl.device())));
+    ClProgram prog(build_burnin());
     BurnInPicker picker(cl, prog.p, std::uint32_t(w.size()));
     ClBuffer lum(cl, CL_MEM_READ_ONLY, w.size() * sizeof(float), w.data());
     ClBuffer scan(cl, CL_MEM_READ_WRITE, w.size() * sizeof(cl_ulong));
-    ClBuffer picks(cl, CL_MEM_WRITE_ONLY, count * sizeof(cl_uint));
-    picker.pick(lum, w, std::uint32_t(w.size()), scan, 12345, 0, 0, count, picks);
+    std::vector<cl_uint2> none(count, cl_uint2{{~0u, ~0u}});
+    ClBuffer picks(cl, CL_MEM_READ_WRITE, count * sizeof(cl_uint2), none.data());
+    picker.add_round(lum, w, std::uint32_t(w.size()), scan, 12345, count, picks);
+    std::vector<cl_uint2> got(count);
+    picks.read(cl, got.data());
     std::vector<cl_uint> out(count);
-    picks.read(cl, out.data());
+    for (std::uint32_t j = 0; j < count; ++j) {
+        EXPECT_EQ(got[j].s[0], 0u) << "pick " << j << " not of round 0";
+        out[j] = got[j].s[1];
+    }
     if (scan_out) {
         scan_out->resize(w.size());
         scan.read(cl, scan_out->data());
@@ -300,6 +312,135 @@ TEST(BurnInPick, MillionSamplesFollowTheirLuminanceByBinade) {
     EXPECT_LT(chi2, chi2_critical_001(pools - 1));
 }
 
+namespace {
+
+// Runs the reservoir over `rounds` (the luminances of each, all of one size
+// n) for `count` chains; returns each chain's pick (round, index).
+std::vector<cl_uint2> reservoir(const std::vector<std::vector<float>>& rounds,
+                                std::uint32_t count, std::uint64_t seed) {
+    const ClContext& cl = test::cl();
+    ClProgram prog(build_burnin());
+    std::uint32_t n = std::uint32_t(rounds[0].size());
+    BurnInPicker picker(cl, prog.p, n);
+    ClBuffer lum(cl, CL_MEM_READ_WRITE, n * sizeof(float));
+    ClBuffer scan(cl, CL_MEM_READ_WRITE, n * sizeof(cl_ulong));
+    std::vector<cl_uint2> none(count, cl_uint2{{~0u, ~0u}});
+    ClBuffer picks(cl, CL_MEM_READ_WRITE, count * sizeof(cl_uint2), none.data());
+    for (const std::vector<float>& w : rounds) {
+        lum.write(cl, w.data());
+        picker.add_round(lum, w, n, scan, seed, count, picks);
+    }
+    std::vector<cl_uint2> out(count);
+    picks.read(cl, out.data());
+    return out;
+}
+
+} // namespace
+
+// The starts are pooled over rounds: with 8 rounds of 1000 samples whose
+// luminance sums differ by up to 10^4 (the first round dark, another dark
+// one later, one round a single bright sample), 2^18 chains start in round r
+// with frequency s_r / sum s and at sample i of it in proportion to its
+// luminance. Chi-square at significance 0.001 (fixed seed) over the rounds,
+// and over all samples pooled until each pool expects 5 picks; samples
+// without light are never picked. Per-round picks (each round keeping 1/8 of
+// the chains) give the rounds equal shares and fail the first check.
+TEST(BurnInPick, ReservoirPoolsTheRoundsInProportionToLuminance) {
+    const std::uint32_t n = 1000, count = 1u << 18;
+    std::mt19937 rng(21);
+    std::uniform_real_distribution<float> u(0.0f, 1.0f);
+    std::vector<std::vector<float>> rounds(8, std::vector<float>(n, 0.0f));
+    for (std::uint32_t i = 0; i < n; i += 100)
+        rounds[1][i] = 0.1f; // s = 1
+    for (float& x : rounds[3])
+        x = u(rng) < 0.5f ? 0.0f : u(rng) * 1.2f; // s ~ 300
+    for (float& x : rounds[4])
+        x = u(rng) * u(rng) * 0.12f; // s ~ 30
+    rounds[5][777] = 50.0f;
+    for (float& x : rounds[7])
+        x = u(rng) < 0.01f ? u(rng) * 0.6f : 0.0f; // s ~ 3
+    std::vector<cl_uint2> picks = reservoir(rounds, count, 99);
+
+    double total = 0;
+    std::vector<double> s(rounds.size(), 0.0), seen_round(rounds.size(), 0.0);
+    for (std::size_t r = 0; r < rounds.size(); ++r) {
+        for (float x : rounds[r])
+            s[r] += x;
+        total += s[r];
+    }
+    std::vector<std::vector<double>> seen(rounds.size(), std::vector<double>(n, 0.0));
+    for (const cl_uint2& p : picks) {
+        ASSERT_LT(p.s[0], rounds.size());
+        ASSERT_LT(p.s[1], n);
+        ASSERT_GT(rounds[p.s[0]][p.s[1]], 0.0f)
+            << "unlit sample " << p.s[1] << " of round " << p.s[0] << " picked";
+        seen[p.s[0]][p.s[1]] += 1;
+        seen_round[p.s[0]] += 1;
+    }
+    double chi2 = 0;
+    int lit = 0;
+    for (std::size_t r = 0; r < rounds.size(); ++r) {
+        double e = count * s[r] / total;
+        std::printf("round %zu: s %.4g, %.0f starts, %.1f expected\n", r, s[r], seen_round[r], e);
+        if (s[r] == 0) {
+            EXPECT_EQ(seen_round[r], 0) << "round " << r << " without light";
+            continue;
+        }
+        chi2 += (seen_round[r] - e) * (seen_round[r] - e) / e;
+        ++lit;
+    }
+    std::printf("rounds: chi-square %.4g over %d (critical %.4g)\n", chi2, lit,
+                chi2_critical_001(lit - 1));
+    EXPECT_LT(chi2, chi2_critical_001(lit - 1));
+
+    double chi2s = 0, pool_e = 0, pool_n = 0;
+    int pools = 0;
+    for (std::size_t r = 0; r < rounds.size(); ++r)
+        for (std::uint32_t i = 0; i < n; ++i) {
+            if (rounds[r][i] == 0) continue;
+            pool_e += count * rounds[r][i] / total;
+            pool_n += seen[r][i];
+            if (pool_e >= 5) {
+                chi2s += (pool_n - pool_e) * (pool_n - pool_e) / pool_e;
+                ++pools;
+                pool_e = pool_n = 0;
+            }
+        }
+    if (pool_e > 0) chi2s += (pool_n - pool_e) * (pool_n - pool_e) / pool_e, ++pools;
+    std::printf("samples: chi-square %.4g over %d pools (critical %.4g)\n", chi2s, pools,
+                chi2_critical_001(pools - 1));
+    EXPECT_LT(chi2s, chi2_critical_001(pools - 1));
+}
+
+// While no round has light, the reservoir keeps picks uniform over all the
+// samples so far: 5 dark rounds of 100, 50,000 chains, chi-square over the
+// 500 samples at significance 0.001.
+TEST(BurnInPick, DarkRoundsPickUniformlyOverAllRounds) {
+    const std::uint32_t n = 100, count = 50000;
+    std::vector<std::vector<float>> rounds(5, std::vector<float>(n, 0.0f));
+    std::vector<cl_uint2> picks = reservoir(rounds, count, 7);
+    std::vector<double> seen(rounds.size() * n, 0.0);
+    for (const cl_uint2& p : picks) {
+        ASSERT_LT(p.s[0], rounds.size());
+        ASSERT_LT(p.s[1], n);
+        seen[p.s[0] * n + p.s[1]] += 1;
+    }
+    double e = double(count) / seen.size(), chi2 = 0;
+    for (double c : seen)
+        chi2 += (c - e) * (c - e) / e;
+    EXPECT_LT(chi2, chi2_critical_001(int(seen.size()) - 1));
+}
+
+TEST(BurnInPick, ReplaceThresholds) {
+    const std::uint64_t one = 1ull << 32;
+    EXPECT_EQ(burnin_replace_threshold(0, 0, 0), one);
+    EXPECT_EQ(burnin_replace_threshold(0, 0, 1), one / 2);
+    EXPECT_EQ(burnin_replace_threshold(0, 0, 3), one / 4);
+    EXPECT_EQ(burnin_replace_threshold(2.5, 2.5, 7), one); // the first round with light
+    EXPECT_EQ(burnin_replace_threshold(1, 4, 7), one / 4);
+    EXPECT_EQ(burnin_replace_threshold(0, 4, 7), 0u);
+}
+
 TEST(BurnInPick, WeightExponentKeepsTheTotalBelow2To62) {
     for (double sum : {1e-40, 1e-6, 0.75, 1.0, 5.6e5, 3e38, 1e45}) {
         int e = burnin_weight_exponent(sum);
@@ -339,8 +480,8 @@ TEST(OmcKeys, DistinctOverTheWholeCommandLineRange) {
 }
 
 // Every chain starts on the path its pick found lit: mlt_init regenerates,
-// from its round's seed and its index, the sample burnin_pick chose (rounds
-// with uneven shares: 1000 chains over 7 rounds).
+// from its round's seed (made on the device from the pick's round) and its
+// index, the sample burnin_pick chose (1000 chains over 7 rounds).
 TEST(BurnIn, ChainsStartOnThePathsTheirPicksFound) {
     DeviceScene ds = prepare_scene(test::scene("cornell-water", 32, 32));
     MltOptions opt;

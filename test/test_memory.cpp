@@ -77,7 +77,8 @@ TEST(MemoryPlan, ProposalsShareChainStates) {
 }
 
 // The burn-in keeps each thread's luminance (4 bytes) and its 64-bit
-// fixed-point weight, scanned in place (cl/burnin.cl), with 64-bit block totals.
+// fixed-point weight, scanned in place (cl/burnin.cl), with 64-bit block totals;
+// each chain its pick, (round, index).
 TEST(MemoryPlan, BurnInScansSixtyFourBitWeights) {
     DeviceScene ds = prepare_scene(test::scene("cornell", 16, 16));
     std::size_t wg = scan_work_group(test::cl().device());
@@ -85,7 +86,7 @@ TEST(MemoryPlan, BurnInScansSixtyFourBitWeights) {
     EXPECT_EQ(p.bytes("luminance"), 4096u * 4);
     EXPECT_EQ(p.bytes("scan"), 4096u * 8);
     EXPECT_EQ(p.bytes("scan blocks"), scan_bytes(4096, wg, 8));
-    EXPECT_EQ(p.bytes("picks"), 2048u * 4);
+    EXPECT_EQ(p.bytes("picks"), 2048u * 8); // (round, index) per chain
 }
 
 // Smaller budgets give fewer threads, and a render with the chosen count

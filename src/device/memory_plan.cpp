@@ -78,7 +78,8 @@ MemoryPlan plan_mlt(const DeviceScene& ds, const ChainShape& shape, std::size_t 
     p.buffers.push_back({"splat", pixels(ds) * 3 * sizeof(std::uint64_t), false});
     p.buffers.push_back({"stats", MLT_STAT_COUNT * sizeof(std::uint64_t), false});
     p.buffers.push_back({"longest run", sizeof(std::uint32_t), false});
-    p.buffers.push_back({"picks", chains * sizeof(std::uint32_t), false});
+    // Each chain's start, (round, index) (cl/burnin.cl).
+    p.buffers.push_back({"picks", chains * 2 * sizeof(std::uint32_t), false});
     p.buffers.push_back({"luminance", threads * sizeof(float), true});
     // The burn-in's 64-bit fixed-point weights, scanned in place (cl/burnin.cl).
     p.buffers.push_back({"scan", threads * sizeof(std::uint64_t), true});

@@ -38,24 +38,6 @@ const DeviceScene& require_atomics(const ClContext& cl, const DeviceScene& ds) {
     return ds;
 }
 
-// Queues `kernel` over global ids first .. first + count - 1 (a global
-// offset): whole work-groups of kDefaultWorkGroup, then one group of the rest.
-void enqueue_range(const ClContext& cl, const ClKernel& kernel, std::size_t first,
-                   std::size_t count) {
-    std::size_t whole = count / kDefaultWorkGroup * kDefaultWorkGroup;
-    std::size_t parts[2][3] = {{first, whole, kDefaultWorkGroup},
-                               {first + whole, count - whole, count - whole}};
-    for (const auto& [offset, items, local] : parts) {
-        if (items == 0) continue;
-        cl_int err = clEnqueueNDRangeKernel(cl.queue(), kernel.get(), 1, &offset, &items, &local, 0,
-                                            nullptr, nullptr);
-        if (err != CL_SUCCESS)
-            throw InputError("kernel " + kernel.name() + " over " + std::to_string(items) +
-                             " work-items from " + std::to_string(offset) + " (work-group " +
-                             std::to_string(local) + ") failed: " + cl_error_name(err));
-    }
-}
-
 // The kernels' rng_key (cl/rng.cl).
 std::uint64_t rng_key(std::uint64_t seed, std::uint32_t a, std::uint32_t b) {
     return rng_mix64(seed + rng_mix64((std::uint64_t(a) << 32) | b));
@@ -78,20 +60,33 @@ int burnin_weight_exponent(double sum) {
     return 62 - e;
 }
 
+std::uint64_t burnin_replace_threshold(double s, double total, std::uint32_t round) {
+    const double one = 4294967296.0;
+    if (!(total > 0)) return std::uint64_t(std::llround(one / (double(round) + 1)));
+    if (!(s > 0)) return 0;
+    if (s >= total) return std::uint64_t(one);
+    return std::min(std::uint64_t(one), std::uint64_t(std::llround(s / total * one)));
+}
+
 BurnInPicker::BurnInPicker(const ClContext& cl, cl_program program, std::uint32_t max_n)
     : cl_(cl), scan_(cl, program, max_n, sizeof(cl_ulong)), weights_(program, "burnin_weights"),
       pick_(program, "burnin_pick") {}
 
-void BurnInPicker::pick(const ClBuffer& lum, const std::vector<float>& host, std::uint32_t n,
-                        const ClBuffer& scan, std::uint64_t seed, std::uint32_t round,
-                        std::uint32_t first_pick, std::uint32_t count, const ClBuffer& picks) {
+void BurnInPicker::add_round(const ClBuffer& lum, const std::vector<float>& host, std::uint32_t n,
+                             const ClBuffer& scan, std::uint64_t seed, std::uint32_t count,
+                             const ClBuffer& picks) {
+    // The luminances burnin_weights keeps: finite and positive.
     double sum = 0;
     for (std::uint32_t i = 0; i < n; ++i)
-        if (std::isfinite(host[i])) sum += host[i];
+        if (std::isfinite(host[i]) && host[i] > 0) sum += host[i];
+    total_ += sum;
+    const std::uint32_t round = rounds_++;
+    std::uint64_t replace = burnin_replace_threshold(sum, total_, round);
+    if (replace == 0 || count == 0) return;
     weights_.set_args(lum, cl_uint(n), cl_int(burnin_weight_exponent(sum)), scan);
     weights_.enqueue(cl_, n);
     scan_.run(scan, scan, n); // in place
-    pick_.set_args(scan, cl_uint(n), cl_ulong(seed), cl_uint(round), cl_uint(first_pick),
+    pick_.set_args(scan, cl_uint(n), cl_ulong(seed), cl_uint(round), cl_ulong(replace),
                    cl_uint(count), picks);
     pick_.run(cl_, count);
 }
@@ -143,8 +138,6 @@ void MltRenderer::sample_starts() {
     double sum = 0, sum2 = 0;
     cl_ulong omc_seed = derive_seed(opt_.seed, kPurposeOmc);
     cl_ulong pick_seed = derive_seed(opt_.seed, kPurposePick);
-    std::uint32_t picked = 0;
-    starts_.clear();
     for (std::uint32_t it = 0; it < iters; ++it) {
         k_lum_.set_args(scene_.tris, scene_.nodes, scene_.mats, scene_.lights, ds_.frame, state_,
                         cl_ulong(omc_round_seed(omc_seed, it)), cl_uint(0), cl_uint(m), lum,
@@ -155,21 +148,14 @@ void MltRenderer::sample_starts() {
             sum += y;
             sum2 += double(y) * y;
         }
-        if (!opt_.burn_in) continue;
-        // Round it keeps its share of the starts (the first chains % iters rounds one more).
-        std::uint32_t count = chains / iters + (it < chains % iters ? 1u : 0u);
-        if (count == 0) continue;
-        picker.pick(lum, host, m, scan, pick_seed, it, picked, count, picks_);
-        starts_.push_back({it, picked, count});
-        picked += count;
+        if (opt_.burn_in) picker.add_round(lum, host, m, scan, pick_seed, chains, picks_);
     }
     if (!opt_.burn_in) {
         // Fresh samples: round iters, after those that estimated b.
-        std::vector<cl_uint> fresh(chains);
+        std::vector<cl_uint2> fresh(chains);
         for (std::uint32_t c = 0; c < chains; ++c)
-            fresh[c] = c;
+            fresh[c] = cl_uint2{{iters, c}};
         picks_.write(cl_, fresh.data());
-        starts_.push_back({iters, 0, chains});
     }
     double n = double(m) * iters;
     b_ = sum / n;
@@ -187,12 +173,9 @@ void MltRenderer::prepare() {
 
 void MltRenderer::init_chains() {
     cl_ulong omc_seed = derive_seed(opt_.seed, kPurposeOmc);
-    for (const StartRange& r : starts_) {
-        k_init_.set_args(scene_.tris, scene_.nodes, scene_.mats, scene_.lights, ds_.frame, state_,
-                         values_, cl_uint(chains()), cl_ulong(omc_round_seed(omc_seed, r.round)),
-                         picks_, stats_);
-        enqueue_range(cl_, k_init_, r.first, r.count);
-    }
+    k_init_.set_args(scene_.tris, scene_.nodes, scene_.mats, scene_.lights, ds_.frame, state_,
+                     values_, cl_uint(chains()), omc_seed, picks_, stats_);
+    k_init_.enqueue(cl_, chains());
     cl_.finish("kernel mlt_init over " + std::to_string(chains()) + " chains");
 }
 

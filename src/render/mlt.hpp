@@ -24,9 +24,10 @@ struct MltOptions {
     float large_step = 0.5f;          // probability that a step is large
     std::uint64_t seed = 1;
     // Burn-in by OMC (Frolov and Galaktionov, section 3.1): burn_in_iters
-    // rounds of one OMC sample per chain; each round keeps chains / iters of
-    // them in proportion to luminance as chain starts. All chains x iters
-    // samples estimate b. Without burn-in, chains start at fresh OMC samples.
+    // rounds of one OMC sample per thread; each chain starts at a sample
+    // drawn from all rounds' samples in proportion to luminance (a weighted
+    // reservoir over rounds, BurnInPicker). All threads x iters samples
+    // estimate b. Without burn-in, chains start at fresh OMC samples.
     bool burn_in = true;
     std::uint32_t burn_in_iters = 32; // chosen by measurement (doc/RESULTS.md)
     bool float32_states = false;      // unpacked float32 states (reference build)
@@ -63,27 +64,40 @@ std::uint64_t omc_sample_key(std::uint64_t omc_seed, std::uint32_t round, std::u
 // of a round's finite luminances (0 if it is not positive).
 int burnin_weight_exponent(double sum);
 
-// Luminance-proportional picks among the samples of one burn-in round, on
-// the device: fixed-point weights, their prefix sum, binary search.
+// The reservoir's replacement threshold for a round of luminance sum s, when
+// the sums of all rounds so far, this one included, make `total`: 2^32 s /
+// total rounded (2^32: always), or, while total is 0 (no light yet),
+// 2^32 / (round + 1), so that picks stay uniform over all samples so far.
+std::uint64_t burnin_replace_threshold(double s, double total, std::uint32_t round);
+
+// The burn-in's chain starts, on the device, pooled over rounds by a
+// weighted reservoir (cl/burnin.cl): in each round, every chain replaces its
+// pick with probability s_r / (s_0 + .. + s_r) by a sample of the round
+// drawn in proportion to luminance (fixed-point weights, their prefix sum,
+// binary search). After the last round each chain's pick is an independent
+// draw from all the rounds' samples in proportion to luminance (uniform if
+// none had light).
 class BurnInPicker {
   public:
-    // For rounds of up to max_n samples; `program` holds cl/scan.cl (SCAN_T
-    // ulong) and cl/burnin.cl.
+    // For rounds of up to max_n samples; `program` holds cl/rng.cl,
+    // cl/scan.cl (SCAN_T ulong) and cl/burnin.cl.
     BurnInPicker(const ClContext& cl, cl_program program, std::uint32_t max_n);
-    // Of the n samples whose luminances are `lum` on the device and `host`
-    // (the same values, read back), picks `count` in proportion to
-    // luminance (uniformly if none is positive) with the streams of `seed`
-    // and `round`, and writes their indices to picks[first_pick ..
-    // first_pick + count). `scan` (n x 8 bytes) is left holding the prefix
-    // sums of the weights.
-    void pick(const ClBuffer& lum, const std::vector<float>& host, std::uint32_t n,
-              const ClBuffer& scan, std::uint64_t seed, std::uint32_t round,
-              std::uint32_t first_pick, std::uint32_t count, const ClBuffer& picks);
+    // Adds the next round (round 0 first), of n samples whose luminances are
+    // `lum` on the device and `host` (the same values, read back): each of
+    // the `count` picks (uint2 (round, index) each, in `picks`) is replaced
+    // as above, with the streams of `seed` and the round. `scan` (n x 8
+    // bytes) is left holding the prefix sums of the round's weights.
+    void add_round(const ClBuffer& lum, const std::vector<float>& host, std::uint32_t n,
+                   const ClBuffer& scan, std::uint64_t seed, std::uint32_t count,
+                   const ClBuffer& picks);
+    std::uint32_t rounds() const { return rounds_; }
 
   private:
     const ClContext& cl_;
     DeviceScan scan_;
     ClKernel weights_, pick_;
+    std::uint32_t rounds_ = 0;
+    double total_ = 0; // luminance sum of the rounds so far
 };
 
 // Above this relative standard error of b, a render says so (b scales the
@@ -150,11 +164,6 @@ class MltRenderer : public Integrator {
     double b_ = 0, b_rel_error_ = 0;
     bool prepared_ = false;
     std::uint32_t iterations_ = 0;
-    // Chains [first, first + count) start at samples of round `round`.
-    struct StartRange {
-        std::uint32_t round, first, count;
-    };
-    std::vector<StartRange> starts_;
     double prepare_seconds_ = 0, step_seconds_ = 0; // wall time of b + chain start, of steps
 };
 
