@@ -5,6 +5,7 @@
 #include "device/scan.hpp"
 #include "image/image_metrics.hpp"
 #include "render/mlt.hpp"
+#include "stats.hpp"
 #include "test_support.hpp"
 
 #include <gtest/gtest.h>
@@ -18,15 +19,6 @@
 using namespace smallmlt;
 
 namespace {
-
-// Upper critical value of chi-square at significance 0.001: exact for 1 and
-// 2 degrees of freedom, Wilson-Hilferty above (within a fraction of a percent).
-double chi2_critical_001(int df) {
-    if (df == 1) return 10.828;
-    if (df == 2) return 13.816;
-    const double z = 3.0902, a = 2.0 / (9.0 * df);
-    return df * std::pow(1.0 - a + z * std::sqrt(a), 3.0);
-}
 
 template <typename T> std::vector<T> device_scan(const std::vector<T>& in, const char* type) {
     const ClContext& cl = test::cl();
@@ -165,7 +157,7 @@ void check_proportional(const std::vector<float>& w, std::uint32_t count) {
         }
     }
     ASSERT_GE(pools, 2);
-    EXPECT_LT(chi2, chi2_critical_001(pools - 1)) << pools << " pools";
+    EXPECT_LT(chi2, test::chi2_critical_001(pools - 1)) << pools << " pools";
 }
 
 } // namespace
@@ -199,7 +191,7 @@ TEST(BurnInPick, OnlyZerosPicksUniformly) {
     double chi2 = 0;
     for (int c : n)
         chi2 += (c - 200.0) * (c - 200.0) / 200.0;
-    EXPECT_LT(chi2, chi2_critical_001(99));
+    EXPECT_LT(chi2, test::chi2_critical_001(99));
 }
 
 namespace {
@@ -307,17 +299,17 @@ TEST(BurnInPick, MillionSamplesFollowTheirLuminanceByBinade) {
     }
     std::printf("chi-square %.4g over %d pools (critical %.4g); the 2^-6 samples: %.0f picks, "
                 "%.0f expected\n",
-                chi2, pools, chi2_critical_001(pools - 1), small_n, small_e);
+                chi2, pools, test::chi2_critical_001(pools - 1), small_n, small_e);
     ASSERT_GE(pools, 2);
-    EXPECT_LT(chi2, chi2_critical_001(pools - 1));
+    EXPECT_LT(chi2, test::chi2_critical_001(pools - 1));
 }
 
 namespace {
 
 // Runs the reservoir over `rounds` (the luminances of each, all of one size
 // n) for `count` chains; returns each chain's pick (round, index).
-std::vector<cl_uint2> reservoir(const std::vector<std::vector<float>>& rounds,
-                                std::uint32_t count, std::uint64_t seed) {
+std::vector<cl_uint2> reservoir(const std::vector<std::vector<float>>& rounds, std::uint32_t count,
+                                std::uint64_t seed) {
     const ClContext& cl = test::cl();
     ClProgram prog(build_burnin());
     std::uint32_t n = std::uint32_t(rounds[0].size());
@@ -390,8 +382,8 @@ TEST(BurnInPick, ReservoirPoolsTheRoundsInProportionToLuminance) {
         ++lit;
     }
     std::printf("rounds: chi-square %.4g over %d (critical %.4g)\n", chi2, lit,
-                chi2_critical_001(lit - 1));
-    EXPECT_LT(chi2, chi2_critical_001(lit - 1));
+                test::chi2_critical_001(lit - 1));
+    EXPECT_LT(chi2, test::chi2_critical_001(lit - 1));
 
     double chi2s = 0, pool_e = 0, pool_n = 0;
     int pools = 0;
@@ -408,8 +400,8 @@ TEST(BurnInPick, ReservoirPoolsTheRoundsInProportionToLuminance) {
         }
     if (pool_e > 0) chi2s += (pool_n - pool_e) * (pool_n - pool_e) / pool_e, ++pools;
     std::printf("samples: chi-square %.4g over %d pools (critical %.4g)\n", chi2s, pools,
-                chi2_critical_001(pools - 1));
-    EXPECT_LT(chi2s, chi2_critical_001(pools - 1));
+                test::chi2_critical_001(pools - 1));
+    EXPECT_LT(chi2s, test::chi2_critical_001(pools - 1));
 }
 
 // While no round has light, the reservoir keeps picks uniform over all the
@@ -428,7 +420,7 @@ TEST(BurnInPick, DarkRoundsPickUniformlyOverAllRounds) {
     double e = double(count) / seen.size(), chi2 = 0;
     for (double c : seen)
         chi2 += (c - e) * (c - e) / e;
-    EXPECT_LT(chi2, chi2_critical_001(int(seen.size()) - 1));
+    EXPECT_LT(chi2, test::chi2_critical_001(int(seen.size()) - 1));
 }
 
 TEST(BurnInPick, ReplaceThresholds) {
