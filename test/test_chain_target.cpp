@@ -2,7 +2,7 @@
 // a layout with two 24-bit and two 16-bit slots a bounce, depth 4): the
 // chains' states follow the target's closed-form marginals, live and dead
 // bounces included, and the splatted image follows its per-pixel integral.
-// DELIVERY.md (or the comments below) gives the derivations.
+// doc/testing.md ("The chains against a known target") gives the derivations.
 #include "render/mlt.hpp"
 #include "scene/sample_layout.hpp"
 #include "stats.hpp"
@@ -58,7 +58,7 @@ double sin2_sum(double j0, double j1, double n) {
 // its marginals under pi(u) = F(u) / sum F on the grid (film numbers on the
 // 2^-24 grid, each bounce slot on its own). All weights are "per unit
 // volume": sums over grid points divided by the number of grid points.
-// DELIVERY.md derives each of them.
+// doc/testing.md derives each of them.
 struct Target {
     static constexpr double kN24 = 16777216.0, kN16 = 65536.0;
     static constexpr double kQ[2] = {0.5, 0.75}; // continuation phase threshold, left / right
@@ -482,7 +482,7 @@ TEST_P(ChainTarget, StatesFollowTheClosedFormMarginals) {
     ClKernel probe(mlt.program(), "probe_chain_numbers");
     std::vector<cl_uint> row(std::size_t(chains) * (n + 1));
 
-    // The statistics and their cells (see DELIVERY.md for the formulas).
+    // The statistics and their cells (doc/testing.md gives the formulas).
     std::vector<CellStat> st(6);
     st[0].name = "film: 4 x-bins x stripe parity x 8 y-bins";
     st[0].cells = 64;
