@@ -100,6 +100,23 @@ inline double student_two_sided_p(double t, double df) {
     return incomplete_beta(df / 2, 0.5, df / (df + t * t));
 }
 
+// P(F > f) for Snedecor's F with (d1, d2) degrees of freedom.
+inline double f_upper_tail(double f, double d1, double d2) {
+    return f <= 0 ? 1.0 : incomplete_beta(d2 / 2, d1 / 2, d2 / (d2 + d1 * f));
+}
+
+// The f such that P(F > f) = p (bisection on the tail).
+inline double f_critical(double p, double d1, double d2) {
+    double lo = 0, hi = 2;
+    while (f_upper_tail(hi, d1, d2) > p)
+        hi *= 2;
+    for (int i = 0; i < 200 && hi - lo > 1e-12 * hi; ++i) {
+        double mid = (lo + hi) / 2;
+        (f_upper_tail(mid, d1, d2) > p ? lo : hi) = mid;
+    }
+    return hi;
+}
+
 // The t such that P(|T| > t) = p (bisection on the tail).
 inline double student_two_sided_critical(double p, double df) {
     double lo = 0, hi = 1;

@@ -159,69 +159,6 @@ struct Target {
 };
 
 // ---------------------------------------------------------------------------
-// Distributions: regularized incomplete beta (Numerical Recipes' continued
-// fraction), the F and t tails.
-
-double beta_cf(double a, double b, double x) {
-    const double eps = 1e-15, tiny = 1e-300;
-    double qab = a + b, qap = a + 1, qam = a - 1, c = 1, d = 1 - qab * x / qap;
-    if (std::fabs(d) < tiny) d = tiny;
-    d = 1 / d;
-    double h = d;
-    for (int m = 1; m < 100000; ++m) {
-        int m2 = 2 * m;
-        double aa = m * (b - m) * x / ((qam + m2) * (a + m2));
-        d = 1 + aa * d;
-        if (std::fabs(d) < tiny) d = tiny;
-        c = 1 + aa / c;
-        if (std::fabs(c) < tiny) c = tiny;
-        d = 1 / d;
-        h *= d * c;
-        aa = -(a + m) * (qab + m) * x / ((a + m2) * (qap + m2));
-        d = 1 + aa * d;
-        if (std::fabs(d) < tiny) d = tiny;
-        c = 1 + aa / c;
-        if (std::fabs(c) < tiny) c = tiny;
-        d = 1 / d;
-        double del = d * c;
-        h *= del;
-        if (std::fabs(del - 1) < eps) break;
-    }
-    return h;
-}
-
-double beta_inc(double a, double b, double x) {
-    if (x <= 0) return 0;
-    if (x >= 1) return 1;
-    double lbt =
-        std::lgamma(a + b) - std::lgamma(a) - std::lgamma(b) + a * std::log(x) + b * std::log1p(-x);
-    if (x < (a + 1) / (a + b + 2)) return std::exp(lbt) * beta_cf(a, b, x) / a;
-    return 1 - std::exp(lbt) * beta_cf(b, a, 1 - x) / b;
-}
-
-// P(F > f) for F ~ F(d1, d2).
-double f_upper(double f, double d1, double d2) {
-    return f <= 0 ? 1.0 : beta_inc(d2 / 2, d1 / 2, d2 / (d2 + d1 * f));
-}
-
-// P(|T| > t) for T ~ t(nu).
-double t_two_sided(double t, double nu) {
-    return beta_inc(nu / 2, 0.5, nu / (nu + t * t));
-}
-
-// The x where a decreasing tail(x) falls to alpha (bisection).
-template <typename Tail> double critical(Tail tail, double alpha, double hi) {
-    double lo = 0;
-    while (tail(hi) > alpha)
-        hi *= 2;
-    for (int i = 0; i < 200; ++i) {
-        double mid = (lo + hi) / 2;
-        (tail(mid) > alpha ? lo : hi) = mid;
-    }
-    return hi;
-}
-
-// ---------------------------------------------------------------------------
 // Hotelling's T^2 over chains. Chain c contributes the vector n_c of its
 // counts per cell over S snapshots. Chains are independent and identically
 // distributed (own streams; their starts are independent up to the burn-in
@@ -302,8 +239,8 @@ Verdict hotelling(const CellStat& st, std::uint32_t chains, std::uint32_t snapsh
     v.q = q;
     v.t2 = t2;
     v.f = t2 * (n - q) / (q * (n - 1));
-    v.p_value = std::isfinite(v.f) ? f_upper(v.f, q, n - q) : 0.0;
-    double f_limit = critical([&](double f) { return f_upper(f, q, n - q); }, alpha, 2.0);
+    v.p_value = std::isfinite(v.f) ? test::f_upper_tail(v.f, q, n - q) : 0.0;
+    double f_limit = test::f_critical(alpha, q, n - q);
     v.limit = f_limit * q * (n - 1) / (n - q);
     return v;
 }
@@ -671,7 +608,7 @@ TEST_P(ChainTargetSplat, ImageMatchesThePerPixelIntegral) {
     double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     const int tests = 2 * (pixels - 1) + 1;
     const double alpha = 1e-3 / tests, nu = replicas - 1.0;
-    const double t_limit = critical([&](double t) { return t_two_sided(t, nu); }, alpha, 4.0);
+    const double t_limit = test::student_two_sided_critical(alpha, nu);
     std::printf(
         "K %u: %u replicas, %.1f s, acceptance %.1f%%, b +-%.2f%% a render; |t| limit %.2f\n",
         sc.proposals, replicas, seconds, 100 * acceptance, 100 * b_error, t_limit);
