@@ -1,5 +1,6 @@
 /* Entry point of the path tracer (ordinary Monte Carlo). One work-item per
- * pixel; sample s of pixel p uses the stream rng_key(seed, p, s), so an image
+ * pixel; sample s of pixel p reads the numbers of smp_pixel(seed, p, s)
+ * (cl/sample_sobol.cl or cl/sample_omc.cl), so an image
  * depends only on the seed and the sample count, not on how samples are split
  * into passes. accum holds per pixel (sum R, sum G, sum B, number of
  * non-finite samples dropped). */
@@ -15,7 +16,7 @@ __kernel void pt_render(__global const Triangle* tris, __global const BvhNode* n
     float4 acc = accum[pixel];
     uint rays = 0;
     for (uint s = 0; s < spp; ++s) {
-        SampleSource src = smp_omc(rng_key(seed, pixel, first_sample + s));
+        SampleSource src = smp_pixel(seed, pixel, first_sample + s);
         float fx = (px + smp_uniform(&src, 0u, layout_film(0u))) / (float)frame.width;
         float fy = (py + smp_uniform(&src, 0u, layout_film(1u))) / (float)frame.height;
         PathResult r = path_trace(&sc, &src, camera_ray(&frame, fx, fy));

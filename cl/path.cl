@@ -1,6 +1,6 @@
 /* The path: unidirectional path tracing with next-event estimation and MIS
- * (power heuristic) at diffuse vertices, Russian roulette from bounce
- * RR_START_BOUNCE. Written once for every method: it reads its numbers only
+ * (power heuristic) at diffuse vertices, Russian roulette by the throughput
+ * (path_survives). Written once for every method: it reads its numbers only
  * through smp_uniform (via path_number) and does not know who provides them.
  * Bounce b owns the numbers for scattering at the b-th surface vertex, so a
  * path of depth D (D bounces at most) consumes bounces 0 .. D-1. */
@@ -92,12 +92,26 @@ BsdfSample path_scatter(SampleSource* src, uint bounce, const Material* m, float
 #endif
 }
 
-/* Russian roulette after scattering at `bounce`: false ends the path,
- * otherwise *beta is divided by the survival probability. */
+/* Luminance (Rec. 709 weights): the MLT target function I = lum(F). */
+inline float path_luminance(float3 c) {
+    return 0.2126f * c.x + 0.7152f * c.y + 0.0722f * c.z;
+}
+
+/* Russian roulette after scattering at `bounce` (the rule of Roulette in
+ * src/scene/sample_layout.hpp): false ends the path, otherwise *beta is
+ * divided by the survival probability. No number is read while the
+ * throughput measure is at or above RR_THRESHOLD (and RR_CAP is 1). */
 inline bool path_survives(SampleSource* src, uint bounce, float3* beta) {
 #if SLOT_RR >= 0
     if (bounce < RR_START_BOUNCE) return true;
-    float q = layout_quantize_prob(fmin(0.95f, path_max3(*beta)), SLOT_RR_BITS);
+#if RR_BY_LUMINANCE
+    float m = path_luminance(*beta);
+#else
+    float m = path_max3(*beta);
+#endif
+    float p = fmin(RR_CAP, m * (1.0f / RR_THRESHOLD));
+    if (p >= 1.0f) return true;
+    float q = layout_quantize_prob(p, SLOT_RR_BITS);
     if (path_number(src, bounce, SLOT_RR) >= q) return false;
     *beta /= q;
 #endif
@@ -142,11 +156,6 @@ PathResult path_trace(const SceneView* sc, SampleSource* src, Ray ray) {
         ray.tmax = INFINITY;
     }
     return res;
-}
-
-/* Luminance (Rec. 709 weights): the MLT target function I = lum(F). */
-inline float path_luminance(float3 c) {
-    return 0.2126f * c.x + 0.7152f * c.y + 0.0722f * c.z;
 }
 
 /* False for a radiance with a NaN or infinite channel: such a sample is

@@ -18,3 +18,9 @@ inline SampleSource smp_omc(ulong key) {
 inline float smp_uniform(SampleSource* s, uint bounce, LayoutSlot at) {
     return layout_unit(rng_u32(s->key, at.dim) >> (32u - at.bits), at.bits);
 }
+
+/* Sample `sample` of pixel `pixel` for the path tracer: the stream of the
+ * key (seed, pixel, sample). */
+inline SampleSource smp_pixel(ulong seed, uint pixel, uint sample) {
+    return smp_omc(rng_key(seed, pixel, sample));
+}

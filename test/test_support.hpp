@@ -44,19 +44,21 @@ inline DeviceScene layout_only_scene(const SceneFeatures& f, int width = 4, int 
 }
 
 // Path-traced image of `ds` at `spp` samples per pixel.
-inline Image render_pt(const DeviceScene& ds, std::uint64_t seed, std::uint32_t spp) {
-    PathTracer pt(cl(), ds, seed);
+inline Image render_pt(const DeviceScene& ds, std::uint64_t seed, std::uint32_t spp,
+                       PtSampler sampler = PtSampler::Sobol) {
+    PathTracer pt(cl(), ds, seed, sampler);
     pt.add_samples(spp);
     return pt.image();
 }
 
 // `batches` path-traced images of `ds`, each the mean of `spp / batches`
-// samples per pixel of one render (seed `seed`): independent replicas, since
-// a render's samples are numbered and never repeat. A batch is the difference
-// of the running sums before and after it.
+// samples per pixel of one render (seed `seed`) with the random sampler:
+// independent replicas, since a render's samples are numbered and never
+// repeat (a Sobol render's batches are not: they share a scramble). A batch
+// is the difference of the running sums before and after it.
 inline std::vector<Image> render_pt_batches(const DeviceScene& ds, std::uint64_t seed,
                                             std::uint32_t spp, int batches) {
-    PathTracer pt(cl(), ds, seed);
+    PathTracer pt(cl(), ds, seed, PtSampler::Random);
     const std::uint32_t per = spp / std::uint32_t(batches);
     std::vector<Image> out;
     std::vector<double> before;

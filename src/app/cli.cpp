@@ -35,6 +35,13 @@ Render options:
   --height H         film height in pixels (overrides the scene)
   --depth D          maximum bounces, 0..64 (overrides the scene)
   --device INDEX     OpenCL device from `smallmlt devices` (default 0)
+  --rr-start B       Russian roulette from bounce B on (default 3)
+  --rr-threshold T   ... only while the path's throughput is below T; it survives
+                     with probability throughput / T (default 0.3)
+  --rr-cap C         ... and at most C (default 1)
+  --rr-by max|luminance  the throughput is its largest channel (default) or its
+                     luminance. The earlier rule: --rr-threshold 1
+                     --rr-cap 0.95
   --quiet            no progress bar and no summary line
   --reference FILE   long render (.pfm or .exr, same film) to measure the error
                      against: MSE and relative MSE as `compare`, printed at the end
@@ -44,6 +51,10 @@ Render options:
 
   --device-mem BYTES use at most this much device memory, as if the device had
                      only BYTES (suffixes K, M, G); its largest buffer is BYTES/4
+
+PT options:
+  --sampler sobol|random  Owen-scrambled Sobol points per pixel (default) or
+                     independent random numbers
 
 MLT options:
   --threads N|auto   threads (default auto: enough to keep the device busy, halved
@@ -153,12 +164,16 @@ double to_unit_interval(const std::string& flag, const std::string& v) {
     return x;
 }
 
-double to_seconds(const std::string& flag, const std::string& v) {
+double to_positive(const std::string& flag, const std::string& v, const char* what = "number") {
     char* end = nullptr;
     double x = std::strtod(v.c_str(), &end);
     if (v.empty() || *end != '\0' || !std::isfinite(x) || x <= 0)
-        throw UsageError(flag + ": '" + v + "' is not a positive number of seconds");
+        throw UsageError(flag + ": '" + v + "' is not a positive " + what);
     return x;
+}
+
+double to_seconds(const std::string& flag, const std::string& v) {
+    return to_positive(flag, v, "number of seconds");
 }
 
 // What is not a known option: an unknown option is an error, the first
@@ -238,6 +253,27 @@ RenderOptions parse_render(ArgReader& r) {
             o.depth = int(to_int(flag, r.value(flag, arg), 0, kMaxDepth));
         } else if (flag == "--device") {
             o.device = int(to_int(flag, r.value(flag, arg), 0, 1 << 20));
+        } else if (flag == "--rr-start") {
+            o.roulette.start = int(to_int(flag, r.value(flag, arg), 0, kMaxDepth));
+        } else if (flag == "--rr-threshold") {
+            o.roulette.threshold = float(to_positive(flag, r.value(flag, arg)));
+        } else if (flag == "--rr-cap") {
+            double c = to_unit_interval(flag, r.value(flag, arg));
+            if (c == 0) throw UsageError("--rr-cap: 0 would end every path");
+            o.roulette.cap = float(c);
+        } else if (flag == "--rr-by") {
+            std::string b = r.value(flag, arg);
+            if (b != "max" && b != "luminance")
+                throw UsageError("--rr-by: '" + b + "' is not a measure (max or luminance)");
+            o.roulette.by_luminance = b == "luminance";
+        } else if (flag == "--sampler") {
+            std::string b = r.value(flag, arg);
+            if (b == "sobol")
+                o.sampler = PtSampler::Sobol;
+            else if (b == "random")
+                o.sampler = PtSampler::Random;
+            else
+                throw UsageError("--sampler: '" + b + "' is not a sampler (sobol or random)");
         } else if (arg == "--quiet") {
             o.quiet = true;
         } else {

@@ -1,6 +1,8 @@
 // Command-line parsing. Bad flags and values throw UsageError naming the flag.
 #pragma once
 #include "render/mlt.hpp"
+#include "render/path_tracer.hpp"
+#include "scene/sample_layout.hpp"
 
 #include <cstdint>
 #include <optional>
@@ -33,6 +35,8 @@ struct RenderOptions {
     std::string log;             // --log: CSV of error against render time
     double log_interval_s = 1.0; // --log-every
     std::optional<int> width, height, depth;
+    Roulette roulette;                     // --rr-*: every method
+    PtSampler sampler = PtSampler::Sobol;  // --sampler: path tracing
     int device = 0;
     bool quiet = false;
 };

@@ -73,7 +73,7 @@ std::uint32_t fit_to_device(const RenderOptions& o, const ClContext& cl, const D
 std::unique_ptr<Integrator> make_integrator(const RenderOptions& o, const ClContext& cl,
                                             const DeviceScene& ds) {
     std::uint32_t threads = fit_to_device(o, cl, ds);
-    if (o.method == Method::Pt) return std::make_unique<PathTracer>(cl, ds, o.seed);
+    if (o.method == Method::Pt) return std::make_unique<PathTracer>(cl, ds, o.seed, o.sampler);
     MltOptions m;
     m.threads = threads;
     m.proposals = o.proposals;
@@ -96,6 +96,7 @@ int run_render(const RenderOptions& o) {
     if (o.width) scene.width = *o.width;
     if (o.height) scene.height = *o.height;
     if (o.depth) scene.depth = *o.depth;
+    scene.roulette = o.roulette;
     std::unique_ptr<ConvergenceLog> log;
     if (!o.reference.empty())
         log = std::make_unique<ConvergenceLog>(o.reference, o.log, o.log_interval_s, scene.width,

@@ -13,12 +13,18 @@
 
 namespace smallmlt {
 
+// Where the path tracer's numbers come from: Owen-scrambled Sobol points
+// (cl/sample_sobol.cl) or the independent stream of each sample's key
+// (cl/sample_omc.cl, what burn-in and MLT's large steps use).
+enum class PtSampler { Sobol, Random };
+
 // Kernel files of the path-tracing program, in build order.
-const std::vector<std::string>& pt_program_files();
+std::vector<std::string> pt_program_files(PtSampler sampler);
 
 class PathTracer : public Integrator {
   public:
-    PathTracer(const ClContext& cl, const DeviceScene& ds, std::uint64_t seed);
+    PathTracer(const ClContext& cl, const DeviceScene& ds, std::uint64_t seed,
+               PtSampler sampler = PtSampler::Sobol);
 
     void advance(std::uint32_t units) override { add_samples(units); }
     std::uint64_t units_for_spp(std::uint32_t spp) const override { return spp; }

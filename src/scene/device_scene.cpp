@@ -96,7 +96,7 @@ DeviceScene prepare_scene(const Scene& scene) {
     }
     build_lights(ds);
     features.num_lights = static_cast<std::uint32_t>(ds.lights.size());
-    ds.layout = make_layout(features);
+    ds.layout = make_layout(features, scene.roulette);
     ds.frame = make_frame(scene.camera, scene.width, scene.height, scene.depth);
     ds.frame.num_lights = features.num_lights;
     return ds;

@@ -19,20 +19,21 @@ int light_pick_bits(std::uint32_t num_lights) {
     return bits < kLowBits ? kLowBits : bits;
 }
 
-SampleLayout make_layout(const SceneFeatures& f) {
+SampleLayout make_layout(const SceneFeatures& f, const Roulette& rr) {
     bool want[kSlotCount] = {};
     bool nee = f.diffuse && f.num_lights > 0;
     want[kBsdfU] = want[kBsdfV] = f.diffuse;
     want[kLightU] = want[kLightV] = nee;
     want[kLightPick] = nee && f.num_lights > 1;
     want[kFresnel] = f.dielectric;
-    want[kRoulette] = f.depth > kRouletteStart;
+    want[kRoulette] = f.depth > rr.start;
     int width[kSlotCount] = {
         kHighBits, kHighBits, kHighBits, kHighBits, light_pick_bits(f.num_lights),
         kLowBits,  kLowBits};
     SampleLayout l;
     l.depth = f.depth;
     l.features = f;
+    l.roulette = rr;
     for (int s = 0; s < kSlotCount; ++s) {
         l.index[s] = want[s] ? l.bounce_dims++ : -1;
         l.bits[s] = want[s] ? width[s] : 0;
@@ -60,7 +61,10 @@ std::string SampleLayout::defines() const {
     d << "#define LAYOUT_HAS_NEE " << (has(kLightU) ? 1 : 0) << "\n";
     d << "#define LAYOUT_CAMERA_BITS " << kHighBits << "u\n";
     d << "#define LAYOUT_BOUNCE_BITS " << bounce_bits << "u\n";
-    d << "#define RR_START_BOUNCE " << kRouletteStart << "u\n";
+    d << "#define RR_START_BOUNCE " << roulette.start << "u\n";
+    d << std::hexfloat << "#define RR_THRESHOLD " << roulette.threshold << "f\n";
+    d << "#define RR_CAP " << roulette.cap << "f\n" << std::defaultfloat;
+    d << "#define RR_BY_LUMINANCE " << (roulette.by_luminance ? 1 : 0) << "\n";
     for (int s = 0; s < kSlotCount; ++s) {
         const char* name = slot_name(static_cast<Slot>(s));
         d << "#define SLOT_" << name << " " << index[s] << "\n";

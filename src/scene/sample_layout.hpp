@@ -14,12 +14,25 @@ struct SceneFeatures {
     int depth = 0;
 };
 
+// Russian roulette (cl/path.cl, path_survives): after scattering at a bounce
+// >= start, a path whose throughput measure m (its largest channel, or its
+// luminance) gives p = min(cap, m / threshold) < 1 survives with probability
+// p and is divided by it. The defaults were chosen by equal-time error over
+// the bench scenes (doc/RESULTS.md); classic() is the rule of earlier
+// versions, kept for comparison.
+struct Roulette {
+    int start = 3;
+    float threshold = 0.3f;
+    float cap = 1.0f;
+    bool by_luminance = false;
+    static Roulette classic() { return {3, 1.0f, 0.95f, false}; }
+};
+
 enum Slot : int { kBsdfU, kBsdfV, kLightU, kLightV, kLightPick, kFresnel, kRoulette, kSlotCount };
 
 constexpr int kHighBits = 24;     // continuous slots (BSDF and light sampling)
 constexpr int kLowBits = 16;      // discrete choices
 constexpr int kCameraDims = 2;    // film position, kHighBits each
-constexpr int kRouletteStart = 3; // first bounce where Russian roulette may end a path
 constexpr int kMaxLightPickBits = 24;
 
 struct SampleLayout {
@@ -29,6 +42,7 @@ struct SampleLayout {
     int bounce_bits = 0;   // stored bits per bounce
     int depth = 0;
     SceneFeatures features;
+    Roulette roulette;
 
     bool has(Slot s) const { return index[s] >= 0; }
     int vector_dims() const { return kCameraDims + depth * bounce_dims; }
@@ -49,6 +63,6 @@ const char* slot_name(Slot s);
 // light gets at least 2^8 grid points on average, at most 24 bits.
 int light_pick_bits(std::uint32_t num_lights);
 
-SampleLayout make_layout(const SceneFeatures& f);
+SampleLayout make_layout(const SceneFeatures& f, const Roulette& rr = Roulette());
 
 } // namespace smallmlt

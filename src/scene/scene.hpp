@@ -2,6 +2,7 @@
 // film, camera, depth and the triangles and materials of its meshes.
 #pragma once
 #include "base/vec3.hpp"
+#include "scene/sample_layout.hpp"
 #include "shared_types.h"
 
 #include <set>
@@ -23,6 +24,7 @@ struct SceneTriangle {
 struct Scene {
     int width = 512, height = 512;
     int depth = 8;
+    Roulette roulette; // a render setting (command line), not in the file
     Camera camera;
     std::vector<SceneTriangle> triangles;
     std::vector<Material> materials;
