@@ -1,5 +1,6 @@
 /* A chain's ChainValue (cl/shared_types.h): F(x) of its current state x,
- * its live bounces, and its run of rejections with the stuck mark. */
+ * its live bounces, its run of rejections with the stuck mark, and the stay
+ * weight x has gathered but not yet splatted. */
 
 inline uint chain_bounces(ChainValue v) {
     return v.meta & CHAIN_BOUNCES_MASK;
@@ -16,14 +17,14 @@ inline float3 chain_f(ChainValue v) {
 /* The value of a chain started at a path with F = f and `bounces` live
  * bounces: no rejections yet, not stuck. */
 inline ChainValue chain_started(float3 f, uint bounces) {
-    ChainValue v = {{f.x, f.y, f.z}, bounces};
+    ChainValue v = {{f.x, f.y, f.z}, bounces, 0u};
     return v;
 }
 
 /* The value of a chain that moved to a path with F = f and `bounces` live
  * bounces: its run of rejections starts again, its stuck mark stays. */
 inline ChainValue chain_moved(ChainValue x, float3 f, uint bounces) {
-    ChainValue v = {{f.x, f.y, f.z}, bounces | (x.meta & CHAIN_STUCK_BIT)};
+    ChainValue v = {{f.x, f.y, f.z}, bounces | (x.meta & CHAIN_STUCK_BIT), 0u};
     return v;
 }
 
@@ -35,6 +36,15 @@ inline ChainValue chain_stayed(ChainValue x, uint stuck_run) {
     if (run >= stuck_run) meta |= CHAIN_STUCK_BIT;
     x.meta = meta;
     return x;
+}
+
+/* A stay weight in [0, 64] in the fixed point of ChainValue.stay, and back. */
+inline uint chain_stay_fixed(float w) {
+    return (uint)(w * (float)(1u << MLT_STAY_FRAC_BITS) + 0.5f);
+}
+
+inline float chain_stay_weight(uint fixed) {
+    return (float)fixed * (1.0f / (float)(1u << MLT_STAY_FRAC_BITS));
 }
 
 inline bool chain_stuck(ChainValue v) {

@@ -42,11 +42,13 @@ __kernel void mlt_init(__global const Triangle* tris, __global const BvhNode* no
  * MLT; K = 1 is plain PSSMLT). Work-item t is proposal t % K of chain t / K;
  * a chain's K work-items sit in one work-group (K divides MLT_GROUP):
  * 1. each evaluates its proposal y_i and splats a_i F(y_i)/I(y_i);
- * 2. they meet in local memory; the first splats the stay weight
- *    (K - sum a_i) F(x)/I(x) and picks the next state among (x, y_1..y_K) in
- *    proportion to (K - sum a_i, a_1, .., a_K), counting a run of rejections
+ * 2. they meet in local memory; the first picks the next state among
+ *    (x, y_1..y_K) in proportion to (K - sum a_i, a_1, .., a_K), adds the
+ *    stay weight K - sum a_i to x's gathered weight, splats that at x's
+ *    pixel if the chain moves away, and counts a run of rejections
  *    (doc/stability.md);
- * 3. the picked work-item commits its proposal. */
+ * 3. the group's counters go to stats at once; the picked work-item
+ *    commits its proposal. */
 __kernel void mlt_step(__global const Triangle* tris, __global const BvhNode* nodes,
                        __global const Material* mats, __global const LightEntry* lights,
                        const Frame frame, __global uint* state, __global ChainValue* values,
@@ -56,6 +58,7 @@ __kernel void mlt_step(__global const Triangle* tris, __global const BvhNode* no
     __local float l_a[MLT_GROUP];
     __local uint l_next[MLT_GROUP];
     __local uint l_longest;
+    __local uint l_count[MLT_COUNTS];
     MltThread th = mlt_thread(num_threads, proposals);
     uint c = th.active ? th.chain : 0u;
     SceneView sc = path_scene(tris, nodes, mats, lights, &frame);
@@ -66,22 +69,48 @@ __kernel void mlt_step(__global const Triangle* tris, __global const BvhNode* no
         smp_chain(state, c, th.chains, key, large ? SMP_LARGE : SMP_SMALL, chain_bounces(x));
     EvalResult y = eval_nothing();
     float a = 0.0f;
-    if (th.active) a = mlt_try_proposal(&sc, &frame, &src, chain_f(x), splat, stats, &y);
+    uint atomics = 0u;
+    if (th.active) a = mlt_try_proposal(&sc, &frame, &src, chain_f(x), splat, stats, &y, &atomics);
 
     l_a[th.lid] = a;
-    if (th.lid == 0u) l_longest = 0u;
+    if (th.lid == 0u) {
+        l_longest = 0u;
+        mlt_zero_counts(l_count);
+    }
     barrier(CLK_LOCAL_MEM_FENCE);
     if (th.active && th.i == 0u) {
         float stay = mlt_stay_weight(&l_a[th.first], proposals);
-        mlt_splat(splat, mlt_state_pixel(&frame, state, c, th.chains), chain_f(x), stay);
         uint next = mlt_select(&l_a[th.first], proposals, stay, mlt_select_number(key, proposals));
         l_next[th.lid] = next;
-        if (next == 0u) mlt_stay(&values[c], x, stuck_run, stats, &l_longest);
+        uint pending = mlt_settle_stay(&frame, state, c, th.chains, x, stay, next != 0u, splat,
+                                       &atomics);
+        if (next == 0u)
+            mlt_stay(&values[c], x, pending, stuck_run, stats, &l_longest, &atomics);
+        else
+            atomic_inc(&l_count[MLT_COUNT_ACCEPTED]);
     }
+    if (th.active) mlt_count(l_count, large, y.rays, atomics);
     barrier(CLK_LOCAL_MEM_FENCE);
-    if (th.lid == 0u && l_longest > 0u) atomic_max(longest_run, l_longest);
+    if (th.lid == 0u) mlt_publish(stats, longest_run, l_count, l_longest);
 
     if (!th.active) return;
-    if (l_next[th.first] == th.i + 1u) mlt_move(&src, &values[c], x, y, stats);
-    mlt_count(stats, large, y.rays);
+    if (l_next[th.first] == th.i + 1u) mlt_move(&src, &values[c], x, y);
+}
+
+/* What each chain still owes the film: its gathered stay weight at its
+ * state's pixel, added to the film as mlt_splat would add it, or with
+ * `undo` subtracted again. The host reads the film between the two, so
+ * reading an image leaves the film exactly as it was (integer arithmetic)
+ * and needs no buffer of its own. */
+__kernel void mlt_owed(const Frame frame, __global const uint* state,
+                       __global const ChainValue* values, const uint num_chains,
+                       __global ulong* splat, const uint undo) {
+    uint c = get_global_id(0);
+    if (c >= num_chains) return;
+    ChainValue x = values[c];
+    ulong v[3];
+    if (!mlt_splat_value(chain_f(x), chain_stay_weight(x.stay), v)) return;
+    uint pixel = mlt_state_pixel(&frame, state, c, num_chains);
+    for (uint i = 0; i < 3u; ++i)
+        atom_add(&splat[3u * pixel + i], undo ? (ulong)0 - v[i] : v[i]);
 }

@@ -35,6 +35,7 @@ __kernel void probe_layout(__global uint* out) {
     out[i++] = PROBE_OFFSET(Frame, num_lights);
     out[i++] = sizeof(ChainValue);
     out[i++] = PROBE_OFFSET(ChainValue, meta);
+    out[i++] = PROBE_OFFSET(ChainValue, stay);
 }
 
 /* Closest hit of each ray (origin xyz, tmax in o; direction in d):

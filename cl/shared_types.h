@@ -87,12 +87,21 @@ typedef struct {
  *   that many times; numbers of later bounces are dead and drawn afresh when
  *   a proposal reaches them);
  * - bit 8: the chain has been stuck (a run of stuck_run rejections);
- * - bits 9-31: its current run of consecutive rejections (saturating).
- * 16 bytes. */
+ * - bits 9-31: its current run of consecutive rejections (saturating);
+ * and in `stay` the stay weight x has gathered and not yet splatted, in
+ * fixed point with MLT_STAY_FRAC_BITS fraction bits: a chain splats x once,
+ * when it moves away (or when the weight reaches MLT_STAY_FLUSH), not at
+ * every step it stays. 20 bytes. */
 typedef struct {
     f32 rgb[3];
     u32 meta;
+    u32 stay;
 } ChainValue;
+
+#define MLT_STAY_FRAC_BITS 24
+/* A pending weight at or above this (128) is splatted at once, so that adding
+ * a step's weight (at most K <= 64) never overflows 32 bits. */
+#define MLT_STAY_FLUSH 0x80000000u
 
 #define CHAIN_BOUNCES_MASK 0xFFu
 #define CHAIN_STUCK_BIT 0x100u
@@ -109,7 +118,8 @@ typedef struct {
 #define MLT_STAT_LARGE 1
 #define MLT_STAT_NONFINITE 2
 #define MLT_STAT_RAYS 3
-#define MLT_STAT_STUCK 4 /* chains that have been stuck */
-#define MLT_STAT_COUNT 5
+#define MLT_STAT_STUCK 4   /* chains that have been stuck */
+#define MLT_STAT_ATOMICS 5 /* atomic operations on global memory by the steps */
+#define MLT_STAT_COUNT 6
 
 #endif

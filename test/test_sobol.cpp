@@ -182,16 +182,16 @@ TEST(SobolSampler, SameSeedSameImageWhateverThePassSplit) {
     EXPECT_NE(other.image().rgb, a.image().rgb);
 }
 
-// Unbiased: 16 Sobol renders (independent scrambles: one seed each) of 64
-// spp against the random sampler's 2,048 spp in 32 batches, per 8 x 8 block
+// Unbiased: 16 Sobol renders (independent scrambles: one seed each) of 32
+// spp against the random sampler's 1,024 spp in 32 batches, per 8 x 8 block
 // of luminance sums, Welch's t with Holm at family-wise 0.01.
 TEST(SobolSampler, ImageIsPathTracingsImagePerBlock) {
     for (const char* name : {"cornell", "cornell-water"}) {
         DeviceScene ds = prepare_scene(test::scene(name, 32, 32));
         test::Replicas sobol, random;
         for (std::uint64_t seed = 1; seed <= 16; ++seed)
-            sobol.add(test::block_sums(test::render_pt(ds, 1000 + seed, 64, PtSampler::Sobol), 8));
-        for (const Image& img : test::render_pt_batches(ds, 77, 2048, 32))
+            sobol.add(test::block_sums(test::render_pt(ds, 1000 + seed, 32, PtSampler::Sobol), 8));
+        for (const Image& img : test::render_pt_batches(ds, 77, 1024, 32))
             random.add(test::block_sums(img, 8));
         test::BlockComparison c = test::welch_compare(sobol, random, 0.01);
         std::printf("%s: smallest Holm-adjusted p %.3g (block %zu, Sobol - random %+.2f%%)\n",

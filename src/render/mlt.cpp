@@ -20,6 +20,7 @@ std::string program_defines(const ClContext& cl, const DeviceScene& ds, const Ml
     std::string d = ds.layout.defines() + scan_defines(cl.device()) + "#define MLT_GROUP " +
                     std::to_string(kDefaultWorkGroup) + "u\n";
     if (opt.float32_states) d += "#define PSS_FLOAT32 1\n";
+    if (opt.eager_stay) d += "#define MLT_EAGER_STAY 1\n";
     return d;
 }
 
@@ -114,7 +115,7 @@ MltRenderer::MltRenderer(const ClContext& cl, const DeviceScene& ds, const MltOp
       plan_(plan_mlt(ds, chain_shape(opt), scan_work_group(cl.device()))),
       program_(cl.build(mlt_program_files(opt), program_defines(cl, ds, opt))),
       k_lum_(program_.p, "mlt_luminance"), k_init_(program_.p, "mlt_init"),
-      k_step_(program_.p, "mlt_step"), scene_(cl, ds),
+      k_step_(program_.p, "mlt_step"), k_owed_(program_.p, "mlt_owed"), scene_(cl, ds),
       state_(cl, CL_MEM_READ_WRITE, plan_.bytes("state")),
       values_(cl, CL_MEM_READ_WRITE, plan_.bytes("values")),
       splat_(cl, CL_MEM_READ_WRITE, plan_.bytes("splat")),
@@ -209,6 +210,7 @@ MltStats MltRenderer::stats() const {
     out.nonfinite = s[MLT_STAT_NONFINITE];
     out.rays = s[MLT_STAT_RAYS];
     out.stuck = s[MLT_STAT_STUCK];
+    out.atomics = s[MLT_STAT_ATOMICS];
     cl_uint longest = 0;
     longest_run_.read(cl_, &longest);
     out.longest_run = longest;
@@ -260,11 +262,13 @@ std::string MltRenderer::summary(double) const {
     std::snprintf(buf, sizeof buf,
                   "%u chains x %u proposals x %u steps (state %u B/chain), %.3f M mutations/s, "
                   "%.3f M rays/s (steps only; b and chain start %.2f s), acceptance %.1f%%, "
-                  "large steps %.1f%%, b = %.5g (+-%.2f%%), %llu non-finite dropped, "
+                  "large steps %.1f%%, %.2f global atomics/mutation, b = %.5g (+-%.2f%%), "
+                  "%llu non-finite dropped, "
                   "longest run of rejections %u, %llu chains stuck (%u in a row)",
                   chains(), opt_.proposals, iterations_, state_bytes_per_chain(),
                   double(s.mutations) * per_s, double(s.rays) * per_s, prepare_seconds_,
-                  double(s.accepted) * per_mutation, double(s.large) * per_mutation, b_,
+                  double(s.accepted) * per_mutation, double(s.large) * per_mutation,
+                  s.mutations ? double(s.atomics) / double(s.mutations) : 0.0, b_,
                   100.0 * b_rel_error_, static_cast<unsigned long long>(s.nonfinite), s.longest_run,
                   static_cast<unsigned long long>(s.stuck), opt_.stuck_run);
     return buf;
@@ -272,7 +276,13 @@ std::string MltRenderer::summary(double) const {
 
 Image MltRenderer::image() const {
     std::vector<cl_ulong> acc(pixels() * 3);
-    splat_.read(cl_, acc.data());
+    // The film with the stay weights the chains have gathered and not yet
+    // splatted, which are then taken out again.
+    for (cl_uint undo : {0u, 1u}) {
+        k_owed_.set_args(ds_.frame, state_, values_, cl_uint(chains()), splat_, undo);
+        k_owed_.run(cl_, chains());
+        if (!undo) splat_.read(cl_, acc.data());
+    }
     Image img(int(ds_.frame.width), int(ds_.frame.height));
     double mutations = double(iterations_) * opt_.threads;
     if (mutations == 0) return img;

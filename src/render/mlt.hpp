@@ -31,6 +31,7 @@ struct MltOptions {
     bool burn_in = true;
     std::uint32_t burn_in_iters = 32; // chosen by measurement (doc/RESULTS.md)
     bool float32_states = false;      // unpacked float32 states (reference build)
+    bool eager_stay = false;          // splat x's stay weight at every step (reference build)
     // A chain that rejects this many proposals in a row counts as stuck
     // (reported, not acted on; doc/stability.md).
     std::uint32_t stuck_run = kDefaultStuckRun;
@@ -106,6 +107,7 @@ constexpr double kMaxBRelError = 0.01;
 
 struct MltStats {
     std::uint64_t mutations = 0, accepted = 0, large = 0, nonfinite = 0, rays = 0;
+    std::uint64_t atomics = 0;     // atomic operations on global memory by the steps
     std::uint64_t stuck = 0;       // chains that rejected stuck_run proposals in a row
     std::uint32_t longest_run = 0; // most consecutive rejections of any chain
 };
@@ -159,6 +161,7 @@ class MltRenderer : public Integrator {
     MemoryPlan plan_; // sizes of every buffer below (src/memory_plan.cpp)
     ClProgram program_;
     ClKernel k_lum_, k_init_, k_step_;
+    mutable ClKernel k_owed_; // run by image(), which leaves the film as it was
     SceneBuffers scene_;
     ClBuffer state_, values_, splat_, stats_, longest_run_, picks_;
     double b_ = 0, b_rel_error_ = 0;

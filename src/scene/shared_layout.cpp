@@ -36,8 +36,9 @@ SMALLMLT_CHECK_OFFSET(Frame, du, 32);
 SMALLMLT_CHECK_OFFSET(Frame, depth, 44);
 SMALLMLT_CHECK_OFFSET(Frame, dv, 48);
 SMALLMLT_CHECK_OFFSET(Frame, num_lights, 60);
-static_assert(sizeof(ChainValue) == 16, "ChainValue");
+static_assert(sizeof(ChainValue) == 20, "ChainValue");
 SMALLMLT_CHECK_OFFSET(ChainValue, meta, 12);
+SMALLMLT_CHECK_OFFSET(ChainValue, stay, 16);
 static_assert(kMaxDepth <= CHAIN_BOUNCES_MASK, "ChainValue.meta holds the live bounces");
 #undef SMALLMLT_CHECK_OFFSET
 
@@ -69,7 +70,8 @@ std::vector<std::uint32_t> host_layout() {
             offsetof(Frame, dv),
             offsetof(Frame, num_lights),
             sizeof(ChainValue),
-            offsetof(ChainValue, meta)};
+            offsetof(ChainValue, meta),
+            offsetof(ChainValue, stay)};
 }
 
 } // namespace smallmlt
