@@ -10,7 +10,7 @@
 # PLOT_ONLY=1 redraws the charts and the table from the last run's CSVs.
 set -eu
 BIN=${1:-build/smallmlt}
-SCENES=${SCENES:-cornell-water cornell-glass ajar}
+SCENES=${SCENES:-cornell cornell-water cornell-glass ajar}
 SIZE=${SIZE:-128}
 SECONDS_=${SECONDS:-30}
 SEEDS=${SEEDS:-1 2 3}

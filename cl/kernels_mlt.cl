@@ -47,8 +47,9 @@ __kernel void mlt_init(__global const Triangle* tris, __global const BvhNode* no
  *    stay weight K - sum a_i to x's gathered weight, splats that at x's
  *    pixel if the chain moves away, and counts a run of rejections
  *    (doc/stability.md);
- * 3. the group's counters go to stats at once; the picked work-item
- *    commits its proposal. */
+ * 3. the group's counters, with the luminance of its large steps (each an
+ *    OMC sample of b's integrand), go to stats at once; the picked
+ *    work-item commits its proposal. */
 __kernel void mlt_step(__global const Triangle* tris, __global const BvhNode* nodes,
                        __global const Material* mats, __global const LightEntry* lights,
                        const Frame frame, __global uint* state, __global ChainValue* values,
@@ -59,6 +60,7 @@ __kernel void mlt_step(__global const Triangle* tris, __global const BvhNode* no
     __local uint l_next[MLT_GROUP];
     __local uint l_longest;
     __local uint l_count[MLT_COUNTS];
+    __local ulong l_large_lum;
     MltThread th = mlt_thread(num_threads, proposals);
     uint c = th.active ? th.chain : 0u;
     SceneView sc = path_scene(tris, nodes, mats, lights, &frame);
@@ -75,6 +77,7 @@ __kernel void mlt_step(__global const Triangle* tris, __global const BvhNode* no
     l_a[th.lid] = a;
     if (th.lid == 0u) {
         l_longest = 0u;
+        l_large_lum = 0ul;
         mlt_zero_counts(l_count);
     }
     barrier(CLK_LOCAL_MEM_FENCE);
@@ -89,9 +92,9 @@ __kernel void mlt_step(__global const Triangle* tris, __global const BvhNode* no
         else
             atomic_inc(&l_count[MLT_COUNT_ACCEPTED]);
     }
-    if (th.active) mlt_count(l_count, large, y.rays, atomics);
+    if (th.active) mlt_count(l_count, &l_large_lum, large, y, atomics);
     barrier(CLK_LOCAL_MEM_FENCE);
-    if (th.lid == 0u) mlt_publish(stats, longest_run, l_count, l_longest);
+    if (th.lid == 0u) mlt_publish(stats, longest_run, l_count, l_large_lum, l_longest);
 
     if (!th.active) return;
     if (l_next[th.first] == th.i + 1u) mlt_move(&src, &values[c], x, y);

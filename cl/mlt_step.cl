@@ -170,19 +170,33 @@ inline void mlt_zero_counts(__local uint* count) {
         count[i] = 0u;
 }
 
-/* A work-item's share of the group's counters: rays, large steps, global
- * atomics. */
-inline void mlt_count(__local uint* count, bool large, uint rays, uint atomics) {
-    atomic_add(&count[MLT_COUNT_RAYS], rays);
-    if (large) atomic_inc(&count[MLT_COUNT_LARGE]);
+/* A large step's luminance in the fixed point of MLT_STAT_LARGE_LUM. */
+inline ulong mlt_b_sample(float lum) {
+    return (ulong)(fmin(lum, MLT_B_MAX_SAMPLE) * (float)(1u << MLT_B_FRAC_BITS) + 0.5f);
+}
+
+/* A work-item's share of the group's counters: rays, large steps and their
+ * luminance, global atomics. */
+inline void mlt_count(__local uint* count, __local ulong* large_lum, bool large, EvalResult y,
+                      uint atomics) {
+    atomic_add(&count[MLT_COUNT_RAYS], y.rays);
+    if (large) {
+        atomic_inc(&count[MLT_COUNT_LARGE]);
+        ulong v = mlt_b_sample(path_luminance(y.f));
+        if (v) atom_add(large_lum, v);
+    }
     if (atomics) atomic_add(&count[MLT_COUNT_ATOMICS], atomics);
 }
 
 /* Adds the group's counters and longest run to the global ones, counting
  * the atomics this takes as well. */
 inline void mlt_publish(__global ulong* stats, __global uint* longest_run,
-                        __local const uint* count, uint longest) {
+                        __local const uint* count, ulong large_lum, uint longest) {
     uint n = 1u; /* the last add below */
+    if (large_lum) {
+        atom_add(&stats[MLT_STAT_LARGE_LUM], large_lum);
+        ++n;
+    }
     if (longest > 0u) {
         atomic_max(longest_run, longest);
         ++n;

@@ -120,6 +120,14 @@ typedef struct {
 #define MLT_STAT_RAYS 3
 #define MLT_STAT_STUCK 4   /* chains that have been stuck */
 #define MLT_STAT_ATOMICS 5 /* atomic operations on global memory by the steps */
-#define MLT_STAT_COUNT 6
+#define MLT_STAT_LARGE_LUM 6 /* sum of I(y) over large steps, MLT_B_FRAC_BITS fixed point */
+#define MLT_STAT_COUNT 7
+
+/* Fraction bits of the large steps' luminance sum: exact, order-free sums,
+ * so b and the image stay repeatable for a seed. One sample adds at most
+ * MLT_B_MAX_SAMPLE (larger luminances are clamped: 2^40, far above any
+ * scene's). */
+#define MLT_B_FRAC_BITS 24
+#define MLT_B_MAX_SAMPLE 1099511627776.0f
 
 #endif

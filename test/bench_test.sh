@@ -19,10 +19,10 @@ rows() { [ "$(tail -n +2 "$1" | wc -l)" -eq "$2" ]; }
 # png FILE: a PNG image
 png() { [ "$(head -c 4 "$1" | tail -c 3)" = PNG ]; }
 
-truth time_to_error_rows rows "$R/error_time/time_to_error.csv" 15
+truth time_to_error_rows rows "$R/error_time/time_to_error.csv" 10
 truth time_to_error_pt_is_1 awk -F, 'NR > 1 && $2 == "pt" && $3 != "1.000" {exit 1}' "$R/error_time/time_to_error.csv"
 truth time_to_error_numbers awk -F, 'NR > 1 && !($3 + 0 > 0 && $4 + 0 > 0 && $6 + 0 > 0) {exit 1}' "$R/error_time/time_to_error.csv"
-for scene in cornell-water cornell-glass ajar; do
+for scene in cornell cornell-water; do
     truth "log_methods_$scene" [ "$(cut -d, -f1 "$R/error_time/$scene.csv" | tail -n +2 | sort -u | tr '\n' ' ')" = "mlt mlt-k2 mlt-k4 mlt-none pt " ]
     truth "chart_$scene" png "$R/error_time/$scene.png"
 done

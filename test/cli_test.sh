@@ -79,6 +79,12 @@ if "$BIN" devices | head -n 1 | grep -q "Portable Computing Language"; then
 fi
 check method_bad 2 "--method: 'bdpt' is not a method" -- "$BIN" render scenes/cornell.scene --method bdpt
 check large_step_range 2 "--large-step: '1.5' is not a probability" -- "$BIN" render scenes/cornell.scene --large-step 1.5
+check sampler_bad 2 "--sampler: 'halton' is not a sampler (sobol or random)" -- "$BIN" render scenes/cornell.scene --sampler halton
+check rr_threshold_zero 2 "--rr-threshold: '0' is not a positive number" -- "$BIN" render scenes/cornell.scene --rr-threshold 0
+check rr_cap_zero 2 "--rr-cap: 0 would end every path" -- "$BIN" render scenes/cornell.scene --rr-cap 0
+check rr_cap_range 2 "--rr-cap: '1.5' is not a probability" -- "$BIN" render scenes/cornell.scene --rr-cap 1.5
+check rr_by_bad 2 "--rr-by: 'min' is not a measure (max or luminance)" -- "$BIN" render scenes/cornell.scene --rr-by min
+check rr_start_range 2 "--rr-start: 65 is out of range" -- "$BIN" render scenes/cornell.scene --rr-start 65
 check threads_zero 2 "--threads: 0 is out of range" -- "$BIN" render scenes/cornell.scene --threads 0
 check stuck_run_zero 2 "--stuck-run: 0 is out of range" -- "$BIN" render scenes/cornell.scene --stuck-run 0
 check stuck_note 0 "stayed on one path for 100 steps or more" -- "$BIN" render scenes/tiny-caustic.scene --width 16 --height 16 --threads 1024 --spp 2400 --stuck-run 100 --out "$DIR/stuck.pfm"

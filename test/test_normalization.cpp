@@ -72,3 +72,31 @@ TEST(BEstimate, ImageMeanIsBByConstruction) {
         EXPECT_NEAR(mean, mlt.b(), 1e-5 * mlt.b()) << "K " << k;
     }
 }
+
+// Every large step is an OMC sample of I and joins b, so b keeps converging
+// after burn-in: in the furnace at depth 4, 256 chains with 4 burn-in rounds
+// (1,024 samples) then 400 steps at large-step probability 0.5 (about
+// 51,000 more). The reported error must fall as 1/sqrt(samples) (by more
+// than 5x) and b must stay within 4 of its errors plus 0.2% of the analytic
+// mean. Leaving the large steps out, or counting them twice, fails it.
+TEST(BEstimate, LargeStepsKeepBConverging) {
+    DeviceScene ds = prepare_scene(test::scene("furnace", 16, 16, 4));
+    MltOptions opt;
+    opt.threads = 256;
+    opt.burn_in_iters = 4;
+    opt.large_step = 0.5f;
+    opt.seed = 12;
+    MltRenderer mlt(test::cl(), ds, opt);
+    mlt.prepare();
+    double err0 = mlt.b_rel_error();
+    mlt.step(400);
+    double want = furnace_mean(4), err = mlt.b_rel_error();
+    MltStats s = mlt.stats();
+    std::printf("furnace depth 4: b %.6f (+-%.3f%%, after burn-in +-%.3f%%), %llu large steps, "
+                "analytic %.6f\n",
+                mlt.b(), 100 * err, 100 * err0, static_cast<unsigned long long>(s.large), want);
+    EXPECT_GT(s.large, 45000u);
+    EXPECT_LT(err, err0 / 5);
+    EXPECT_NEAR(mlt.b(), want, (4 * err + 0.002) * want);
+    EXPECT_NEAR(mlt.image().mean_luminance(), mlt.b(), 1e-5 * mlt.b());
+}

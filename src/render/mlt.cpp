@@ -158,10 +158,29 @@ void MltRenderer::sample_starts() {
             fresh[c] = cl_uint2{{iters, c}};
         picks_.write(cl_, fresh.data());
     }
-    double n = double(m) * iters;
-    b_ = sum / n;
-    double var = n > 1 ? (sum2 / n - b_ * b_) * n / (n - 1) : 0;
-    b_rel_error_ = b_ > 0 ? std::sqrt(std::max(var, 0.0) / n) / b_ : 0;
+    double n = double(m) * iters, mean = sum / n;
+    burn_in_sum_ = sum;
+    burn_in_samples_ = std::uint64_t(m) * iters;
+    burn_in_variance_ = n > 1 ? std::max(0.0, (sum2 / n - mean * mean) * n / (n - 1)) : 0;
+}
+
+MltRenderer::BEstimate MltRenderer::b_estimate() const {
+    cl_ulong s[MLT_STAT_COUNT];
+    stats_.read(cl_, s);
+    double n = double(burn_in_samples_) + double(s[MLT_STAT_LARGE]);
+    double sum = burn_in_sum_ + double(s[MLT_STAT_LARGE_LUM]) / double(1u << MLT_B_FRAC_BITS);
+    BEstimate e;
+    e.b = n > 0 ? sum / n : 0;
+    e.rel_error = e.b > 0 ? std::sqrt(burn_in_variance_ / n) / e.b : 0;
+    return e;
+}
+
+double MltRenderer::b() const {
+    return b_estimate().b;
+}
+
+double MltRenderer::b_rel_error() const {
+    return b_estimate().rel_error;
 }
 
 void MltRenderer::prepare() {
@@ -220,21 +239,22 @@ MltStats MltRenderer::stats() const {
 std::vector<std::string> MltRenderer::notes() const {
     std::vector<std::string> out;
     MltStats s = stats();
+    BEstimate be = b_estimate();
     if (std::uint64_t n = s.nonfinite)
         out.push_back(
             std::to_string(n) +
             " samples had a NaN or infinite radiance and were dropped (counted as black)");
-    if (prepared_ && b_ == 0)
+    if (prepared_ && burn_in_sum_ == 0)
         out.push_back("no OMC sample of " +
                       std::to_string(std::uint64_t(opt_.threads) * opt_.burn_in_iters) +
                       " carried light (b = 0): the image is black; is the scene lit?");
-    else if (prepared_ && b_rel_error_ > kMaxBRelError) {
+    else if (prepared_ && be.rel_error > kMaxBRelError) {
         char buf[240];
         std::snprintf(buf, sizeof buf,
                       "few OMC samples carried light: b = %.5g has a relative standard error "
                       "of %.2f%% (above %.0f%%), and the whole image scales with it; more "
-                      "--burn-in-iters or --threads narrow it",
-                      b_, 100.0 * b_rel_error_, 100.0 * kMaxBRelError);
+                      "--burn-in-iters, --threads or a longer render narrow it",
+                      be.b, 100.0 * be.rel_error, 100.0 * kMaxBRelError);
         out.push_back(buf);
     }
     if (s.stuck > 0) {
@@ -247,7 +267,7 @@ std::vector<std::string> MltRenderer::notes() const {
                       100.0 * double(s.stuck) / chains(), opt_.stuck_run, s.longest_run);
         out.push_back(buf);
     }
-    if (prepared_ && b_ > 0 && iterations_ == 0)
+    if (prepared_ && burn_in_sum_ > 0 && iterations_ == 0)
         out.push_back("no MLT step ran in the time given: burn-in took " +
                       std::to_string(prepare_seconds_) +
                       " s; give more time or fewer --burn-in-iters");
@@ -256,6 +276,7 @@ std::vector<std::string> MltRenderer::notes() const {
 
 std::string MltRenderer::summary(double) const {
     MltStats s = stats();
+    BEstimate be = b_estimate();
     double per_s = step_seconds_ > 0 ? 1e-6 / step_seconds_ : 0.0;
     double per_mutation = s.mutations ? 100.0 / double(s.mutations) : 0.0;
     char buf[480];
@@ -268,8 +289,8 @@ std::string MltRenderer::summary(double) const {
                   chains(), opt_.proposals, iterations_, state_bytes_per_chain(),
                   double(s.mutations) * per_s, double(s.rays) * per_s, prepare_seconds_,
                   double(s.accepted) * per_mutation, double(s.large) * per_mutation,
-                  s.mutations ? double(s.atomics) / double(s.mutations) : 0.0, b_,
-                  100.0 * b_rel_error_, static_cast<unsigned long long>(s.nonfinite), s.longest_run,
+                  s.mutations ? double(s.atomics) / double(s.mutations) : 0.0, be.b,
+                  100.0 * be.rel_error, static_cast<unsigned long long>(s.nonfinite), s.longest_run,
                   static_cast<unsigned long long>(s.stuck), opt_.stuck_run);
     return buf;
 }
@@ -286,7 +307,7 @@ Image MltRenderer::image() const {
     Image img(int(ds_.frame.width), int(ds_.frame.height));
     double mutations = double(iterations_) * opt_.threads;
     if (mutations == 0) return img;
-    double scale = b_ * double(pixels()) / mutations / double(1u << SPLAT_FRAC_BITS);
+    double scale = b() * double(pixels()) / mutations / double(1u << SPLAT_FRAC_BITS);
     for (std::size_t i = 0; i < acc.size(); ++i)
         img.rgb[i] = float(double(acc[i]) * scale);
     return img;

@@ -125,15 +125,20 @@ class MltRenderer : public Integrator {
         return double(iterations_) * opt_.threads / double(pixels());
     }
     std::string summary(double seconds) const override;
-    // No OMC sample carried light: the image is black whatever the chains do.
-    bool finished() const override { return prepared_ && b_ == 0; }
+    // No OMC sample of burn-in carried light: the image is black whatever the
+    // chains do.
+    bool finished() const override { return prepared_ && burn_in_sum_ == 0; }
     std::vector<std::string> notes() const override;
 
-    // Runs the OMC samples: b = their mean luminance (with its relative
-    // standard error), and the chains' starting samples (burn-in or fresh).
+    // Runs the OMC samples of burn-in: the first estimate of b, and the
+    // chains' starting samples (burn-in or fresh).
     void sample_starts();
-    double b() const { return b_; }
-    double b_rel_error() const { return b_rel_error_; }
+    // b, the mean luminance I of the OMC samples drawn so far: the burn-in's
+    // and every large step's (each an OMC sample of I), so b keeps converging
+    // as the render goes on; and its relative standard error, from the
+    // burn-in's per-sample variance over all of them.
+    double b() const;
+    double b_rel_error() const;
 
     // Starts every chain at its starting sample's path.
     void init_chains();
@@ -164,7 +169,12 @@ class MltRenderer : public Integrator {
     mutable ClKernel k_owed_; // run by image(), which leaves the film as it was
     SceneBuffers scene_;
     ClBuffer state_, values_, splat_, stats_, longest_run_, picks_;
-    double b_ = 0, b_rel_error_ = 0;
+    struct BEstimate {
+        double b = 0, rel_error = 0;
+    };
+    BEstimate b_estimate() const; // one read of stats
+    double burn_in_sum_ = 0, burn_in_variance_ = 0; // of I over the burn-in's samples
+    std::uint64_t burn_in_samples_ = 0;
     bool prepared_ = false;
     std::uint32_t iterations_ = 0;
     double prepare_seconds_ = 0, step_seconds_ = 0; // wall time of b + chain start, of steps
