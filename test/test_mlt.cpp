@@ -289,11 +289,18 @@ TEST(MltDeterminism, SameSeedSameImage) {
 // n stay splats differs by at most (n + 1) units of 2^-24 times
 // F/I <= 1/0.0722 per unit weight: over these renders (< 2^16 splats a pixel)
 // far below 1e-5 of any lit pixel. tiny-caustic holds chains for hundreds of
-// steps (runs above 128 make the flush happen); cornell moves them often.
+// steps (a run past 128 makes the flush happen) and, at K = 16, for about 30
+// steps at up to 16 a step (past 256 a weight not flushed would wrap 32
+// bits); cornell moves them often.
 // Reading the image mid-render changes nothing: the weights still pending
 // are added to the film for the read and taken out again (mlt_owed).
 TEST(MltStaySplat, GatheredStaysEqualEagerSplatsWithinRounding) {
-    for (const char* name : {"tiny-caustic", "cornell"}) {
+    struct Case {
+        const char* name;
+        std::uint32_t proposals, min_run; // min_run: a run that must flush
+    };
+    for (Case c : {Case{"tiny-caustic", 1, 160}, Case{"tiny-caustic", 16, 20}, Case{"cornell", 1, 0}}) {
+        const char* name = c.name;
         DeviceScene ds = prepare_scene(test::scene(name, 32, 32));
         Image img[2];
         MltStats stats[2];
@@ -302,6 +309,7 @@ TEST(MltStaySplat, GatheredStaysEqualEagerSplatsWithinRounding) {
             opt.threads = 1024;
             opt.large_step = 0.1f;
             opt.seed = 5;
+            opt.proposals = c.proposals;
             opt.eager_stay = eager;
             MltRenderer mlt(test::cl(), ds, opt);
             mlt.prepare();
@@ -320,16 +328,15 @@ TEST(MltStaySplat, GatheredStaysEqualEagerSplatsWithinRounding) {
         }
         double per[2] = {double(stats[0].atomics) / double(stats[0].mutations),
                          double(stats[1].atomics) / double(stats[1].mutations)};
-        std::printf("%s: largest relative difference %.3g; global atomics per mutation %.2f "
-                    "(gathered) against %.2f (every step); longest run %u\n",
-                    name, worst, per[0], per[1], stats[0].longest_run);
+        std::printf("%s, K = %u: largest relative difference %.3g; global atomics per mutation "
+                    "%.2f (gathered) against %.2f (every step); longest run %u\n",
+                    name, c.proposals, worst, per[0], per[1], stats[0].longest_run);
         EXPECT_LT(worst, 1e-5);
         EXPECT_LT(per[0], per[1]);
         EXPECT_EQ(stats[0].accepted, stats[1].accepted) << "the chains took other paths";
-        if (std::string(name) == "tiny-caustic") {
-            // A chain held 160 steps at a near 0 gathers more than 128.
-            EXPECT_GT(stats[0].longest_run, 160u) << "no chain stayed long enough to flush";
-        }
+        // A chain held min_run steps with its proposals' a near 0 gathers
+        // more than 128 (K = 1), or more than 256 (K = 16).
+        EXPECT_GE(stats[0].longest_run, c.min_run) << "no chain stayed long enough to flush";
     }
 }
 
