@@ -85,8 +85,8 @@ __kernel void mlt_step(__global const Triangle* tris, __global const BvhNode* no
         float stay = mlt_stay_weight(&l_a[th.first], proposals);
         uint next = mlt_select(&l_a[th.first], proposals, stay, mlt_select_number(key, proposals));
         l_next[th.lid] = next;
-        uint pending = mlt_settle_stay(&frame, state, c, th.chains, x, stay, next != 0u, splat,
-                                       &atomics);
+        uint pending =
+            mlt_settle_stay(&frame, state, c, th.chains, x, stay, next != 0u, splat, &atomics);
         if (next == 0u)
             mlt_stay(&values[c], x, pending, stuck_run, stats, &l_longest, &atomics);
         else

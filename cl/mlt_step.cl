@@ -131,9 +131,9 @@ inline uint mlt_select(__local const float* a, uint proposals, float stay, float
  * splatted at x's pixel when the chain moves away or the weight reaches
  * MLT_STAY_FLUSH (with MLT_EAGER_STAY: at once). Returns the weight still
  * pending, in the fixed point of ChainValue.stay. */
-inline uint mlt_settle_stay(const Frame* frame, __global const uint* state, uint chain,
-                            uint chains, ChainValue x, float stay, bool moves,
-                            __global ulong* splat, uint* atomics) {
+inline uint mlt_settle_stay(const Frame* frame, __global const uint* state, uint chain, uint chains,
+                            ChainValue x, float stay, bool moves, __global ulong* splat,
+                            uint* atomics) {
     uint pending = x.stay + chain_stay_fixed(stay);
 #ifndef MLT_EAGER_STAY
     if (!moves && pending < MLT_STAY_FLUSH) return pending;

@@ -14,8 +14,8 @@
  * key, which only the random stream (sample_omc.cl) does. */
 
 typedef struct {
-    ulong key;    /* the pixel's scrambling key */
-    uint index;   /* sample index within the pixel */
+    ulong key;  /* the pixel's scrambling key */
+    uint index; /* sample index within the pixel */
 } SampleSource;
 
 inline SampleSource smp_pixel(ulong seed, uint pixel, uint sample) {

@@ -118,8 +118,8 @@ typedef struct {
 #define MLT_STAT_LARGE 1
 #define MLT_STAT_NONFINITE 2
 #define MLT_STAT_RAYS 3
-#define MLT_STAT_STUCK 4   /* chains that have been stuck */
-#define MLT_STAT_ATOMICS 5 /* atomic operations on global memory by the steps */
+#define MLT_STAT_STUCK 4     /* chains that have been stuck */
+#define MLT_STAT_ATOMICS 5   /* atomic operations on global memory by the steps */
 #define MLT_STAT_LARGE_LUM 6 /* sum of I(y) over large steps, MLT_B_FRAC_BITS fixed point */
 #define MLT_STAT_COUNT 7
 

@@ -299,7 +299,8 @@ TEST(MltStaySplat, GatheredStaysEqualEagerSplatsWithinRounding) {
         const char* name;
         std::uint32_t proposals, min_run; // min_run: a run that must flush
     };
-    for (Case c : {Case{"tiny-caustic", 1, 160}, Case{"tiny-caustic", 16, 20}, Case{"cornell", 1, 0}}) {
+    for (Case c :
+         {Case{"tiny-caustic", 1, 160}, Case{"tiny-caustic", 16, 20}, Case{"cornell", 1, 0}}) {
         const char* name = c.name;
         DeviceScene ds = prepare_scene(test::scene(name, 32, 32));
         Image img[2];
@@ -323,8 +324,10 @@ TEST(MltStaySplat, GatheredStaysEqualEagerSplatsWithinRounding) {
         double worst = 0;
         for (std::size_t i = 0; i < img[0].rgb.size(); ++i) {
             double a = img[0].rgb[i], b = img[1].rgb[i];
-            if (b > 0) worst = std::max(worst, std::fabs(a - b) / b);
-            else EXPECT_EQ(a, 0.0) << "pixel value " << i;
+            if (b > 0)
+                worst = std::max(worst, std::fabs(a - b) / b);
+            else
+                EXPECT_EQ(a, 0.0) << "pixel value " << i;
         }
         double per[2] = {double(stats[0].atomics) / double(stats[0].mutations),
                          double(stats[1].atomics) / double(stats[1].mutations)};

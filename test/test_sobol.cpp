@@ -22,8 +22,8 @@ class SobolProbe {
   public:
     explicit SobolProbe(const DeviceScene& ds)
         : program_(test::cl().build({"cl/shared_types.h", "cl/rng.cl", "cl/layout.cl",
-                                              "cl/sample_sobol.cl", "cl/kernels_probe_sobol.cl"},
-                                             ds.layout.defines())) {}
+                                     "cl/sample_sobol.cl", "cl/kernels_probe_sobol.cl"},
+                                    ds.layout.defines())) {}
 
     // Slots `slot` and `slot` + 1 of `bounce` (or the film position) for
     // samples first .. first + n - 1 of `pixel`.
@@ -106,17 +106,17 @@ TEST(SobolSampler, EveryPairIsANetInEveryAlignedBlock) {
     };
     // The film, the first bounce's pairs, and the last bounce's (a padded
     // high dimension: number 2 + 7 * 6 + 2 = 46 of the path).
-    for (Pair pr : {Pair{kFilm, 0}, Pair{0, 0}, Pair{0, 2}, Pair{0, 4}, Pair{last, 0},
-                    Pair{last, 2}})
+    for (Pair pr :
+         {Pair{kFilm, 0}, Pair{0, 0}, Pair{0, 2}, Pair{0, 4}, Pair{last, 0}, Pair{last, 2}})
         for (std::uint32_t pixel : {0u, 1u, 517u})
             for (int m : {1, 4, 8, 11})
                 for (std::uint32_t block : {0u, 1u, 5u}) {
                     std::uint32_t n = 1u << m;
                     std::string why =
                         net_failure(probe.points(pixel, block * n, n, pr.bounce, pr.slot), m);
-                    EXPECT_EQ(why, "") << "bounce " << int(pr.bounce) << " slots " << pr.slot
-                                       << "," << pr.slot + 1 << ", pixel " << pixel
-                                       << ", samples " << block * n << ".." << (block + 1) * n - 1;
+                    EXPECT_EQ(why, "") << "bounce " << int(pr.bounce) << " slots " << pr.slot << ","
+                                       << pr.slot + 1 << ", pixel " << pixel << ", samples "
+                                       << block * n << ".." << (block + 1) * n - 1;
                 }
 }
 
@@ -194,9 +194,8 @@ TEST(SobolSampler, ImageIsPathTracingsImagePerBlock) {
         for (const Image& img : test::render_pt_batches(ds, 77, 1024, 32))
             random.add(test::block_sums(img, 8));
         test::BlockComparison c = test::welch_compare(sobol, random, 0.01);
-        std::printf("%s: smallest Holm-adjusted p %.3g (block %zu, Sobol - random %+.2f%%)\n",
-                    name, c.min_p_adjusted, c.worst,
-                    100 * c.diff[c.worst] / random.mean(c.worst));
+        std::printf("%s: smallest Holm-adjusted p %.3g (block %zu, Sobol - random %+.2f%%)\n", name,
+                    c.min_p_adjusted, c.worst, 100 * c.diff[c.worst] / random.mean(c.worst));
         EXPECT_FALSE(c.any_reject()) << name << ": block " << c.worst << " differs";
     }
 }

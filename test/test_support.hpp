@@ -2,8 +2,8 @@
 // loading with overrides, and small statistics.
 #pragma once
 #include "device/ocl.hpp"
-#include "image/image.hpp"
 #include "device/scene_buffers.hpp"
+#include "image/image.hpp"
 #include "render/mlt.hpp"
 #include "render/path_tracer.hpp"
 #include "scene/device_scene.hpp"

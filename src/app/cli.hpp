@@ -35,8 +35,8 @@ struct RenderOptions {
     std::string log;             // --log: CSV of error against render time
     double log_interval_s = 1.0; // --log-every
     std::optional<int> width, height, depth;
-    Roulette roulette;                     // --rr-*: every method
-    PtSampler sampler = PtSampler::Sobol;  // --sampler: path tracing
+    Roulette roulette;                    // --rr-*: every method
+    PtSampler sampler = PtSampler::Sobol; // --sampler: path tracing
     int device = 0;
     bool quiet = false;
 };

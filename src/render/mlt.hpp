@@ -172,7 +172,7 @@ class MltRenderer : public Integrator {
     struct BEstimate {
         double b = 0, rel_error = 0;
     };
-    BEstimate b_estimate() const; // one read of stats
+    BEstimate b_estimate() const;                   // one read of stats
     double burn_in_sum_ = 0, burn_in_variance_ = 0; // of I over the burn-in's samples
     std::uint64_t burn_in_samples_ = 0;
     bool prepared_ = false;

@@ -6,17 +6,17 @@ namespace smallmlt {
 
 std::vector<std::string> pt_program_files(PtSampler sampler) {
     const char* source = sampler == PtSampler::Sobol ? "cl/sample_sobol.cl" : "cl/sample_omc.cl";
-    return {"cl/shared_types.h", "cl/rng.cl",  "cl/layout.cl", source,           "cl/geometry.cl",
-            "cl/bvh.cl",         "cl/bsdf.cl", "cl/light.cl",  "cl/path.cl",     "cl/camera.cl",
-            "cl/kernels_pt.cl"};
+    return {"cl/shared_types.h", "cl/rng.cl",    "cl/layout.cl",    source,
+            "cl/geometry.cl",    "cl/bvh.cl",    "cl/bsdf.cl",      "cl/light.cl",
+            "cl/path.cl",        "cl/camera.cl", "cl/kernels_pt.cl"};
 }
 
 PathTracer::PathTracer(const ClContext& cl, const DeviceScene& ds, std::uint64_t seed,
                        PtSampler sampler)
     : cl_(cl), ds_(ds), seed_(seed), plan_(plan_pt(ds)),
       program_(cl.build(pt_program_files(sampler), ds.layout.defines())),
-      kernel_(program_.p, "pt_render"),
-      scene_(cl, ds), accum_(cl, CL_MEM_READ_WRITE, plan_.bytes("accumulator")),
+      kernel_(program_.p, "pt_render"), scene_(cl, ds),
+      accum_(cl, CL_MEM_READ_WRITE, plan_.bytes("accumulator")),
       ray_count_(cl, CL_MEM_READ_WRITE, plan_.bytes("ray counts")) {
     accum_.fill_zero(cl);
     ray_count_.fill_zero(cl);

@@ -30,9 +30,9 @@ struct Roulette {
 
 enum Slot : int { kBsdfU, kBsdfV, kLightU, kLightV, kLightPick, kFresnel, kRoulette, kSlotCount };
 
-constexpr int kHighBits = 24;     // continuous slots (BSDF and light sampling)
-constexpr int kLowBits = 16;      // discrete choices
-constexpr int kCameraDims = 2;    // film position, kHighBits each
+constexpr int kHighBits = 24;  // continuous slots (BSDF and light sampling)
+constexpr int kLowBits = 16;   // discrete choices
+constexpr int kCameraDims = 2; // film position, kHighBits each
 constexpr int kMaxLightPickBits = 24;
 
 struct SampleLayout {
