@@ -164,11 +164,9 @@ void MltRenderer::sample_starts() {
     burn_in_variance_ = n > 1 ? std::max(0.0, (sum2 / n - mean * mean) * n / (n - 1)) : 0;
 }
 
-MltRenderer::BEstimate MltRenderer::b_estimate() const {
-    cl_ulong s[MLT_STAT_COUNT];
-    stats_.read(cl_, s);
-    double n = double(burn_in_samples_) + double(s[MLT_STAT_LARGE]);
-    double sum = burn_in_sum_ + double(s[MLT_STAT_LARGE_LUM]) / double(1u << MLT_B_FRAC_BITS);
+MltRenderer::BEstimate MltRenderer::b_estimate(const MltStats& s) const {
+    double n = double(burn_in_samples_) + double(s.large);
+    double sum = burn_in_sum_ + double(s.large_lum) / double(1u << MLT_B_FRAC_BITS);
     BEstimate e;
     e.b = n > 0 ? sum / n : 0;
     e.rel_error = e.b > 0 ? std::sqrt(burn_in_variance_ / n) / e.b : 0;
@@ -176,11 +174,11 @@ MltRenderer::BEstimate MltRenderer::b_estimate() const {
 }
 
 double MltRenderer::b() const {
-    return b_estimate().b;
+    return b_estimate(stats()).b;
 }
 
 double MltRenderer::b_rel_error() const {
-    return b_estimate().rel_error;
+    return b_estimate(stats()).rel_error;
 }
 
 void MltRenderer::prepare() {
@@ -230,6 +228,7 @@ MltStats MltRenderer::stats() const {
     out.rays = s[MLT_STAT_RAYS];
     out.stuck = s[MLT_STAT_STUCK];
     out.atomics = s[MLT_STAT_ATOMICS];
+    out.large_lum = s[MLT_STAT_LARGE_LUM];
     cl_uint longest = 0;
     longest_run_.read(cl_, &longest);
     out.longest_run = longest;
@@ -239,7 +238,7 @@ MltStats MltRenderer::stats() const {
 std::vector<std::string> MltRenderer::notes() const {
     std::vector<std::string> out;
     MltStats s = stats();
-    BEstimate be = b_estimate();
+    BEstimate be = b_estimate(s);
     if (std::uint64_t n = s.nonfinite)
         out.push_back(
             std::to_string(n) +
@@ -276,7 +275,7 @@ std::vector<std::string> MltRenderer::notes() const {
 
 std::string MltRenderer::summary(double) const {
     MltStats s = stats();
-    BEstimate be = b_estimate();
+    BEstimate be = b_estimate(s);
     double per_s = step_seconds_ > 0 ? 1e-6 / step_seconds_ : 0.0;
     double per_mutation = s.mutations ? 100.0 / double(s.mutations) : 0.0;
     char buf[480];

@@ -108,6 +108,7 @@ constexpr double kMaxBRelError = 0.01;
 struct MltStats {
     std::uint64_t mutations = 0, accepted = 0, large = 0, nonfinite = 0, rays = 0;
     std::uint64_t atomics = 0;     // atomic operations on global memory by the steps
+    std::uint64_t large_lum = 0;   // sum of the large steps' I(y), MLT_B_FRAC_BITS fixed point
     std::uint64_t stuck = 0;       // chains that rejected stuck_run proposals in a row
     std::uint32_t longest_run = 0; // most consecutive rejections of any chain
 };
@@ -172,7 +173,7 @@ class MltRenderer : public Integrator {
     struct BEstimate {
         double b = 0, rel_error = 0;
     };
-    BEstimate b_estimate() const;                   // one read of stats
+    BEstimate b_estimate(const MltStats& s) const;
     double burn_in_sum_ = 0, burn_in_variance_ = 0; // of I over the burn-in's samples
     std::uint64_t burn_in_samples_ = 0;
     bool prepared_ = false;
