@@ -1,7 +1,8 @@
 /* Entry points of primary-sample-space MLT (Kelemen et al. 2002) with the
  * chain storage of Frolov and Galaktionov: one chain per K work-items,
  * states packed (pss.cl), proposals lazy (sample_chain.cl), the step's parts
- * in mlt_step.cl. */
+ * in mlt_step.cl, the film in film.cl. Every kernel runs in work-groups of
+ * MLT_GROUP and counts into its group's row of stats. */
 
 /* Luminance of the OMC path of each key rng_key(seed, first + i, 0): the
  * normalization b = E[I] is their mean. */
@@ -10,12 +11,19 @@ __kernel void mlt_luminance(__global const Triangle* tris, __global const BvhNod
                             const Frame frame, __global uint* state, const ulong seed,
                             const uint first, const uint count, __global float* lum,
                             __global ulong* stats) {
-    uint i = get_global_id(0);
-    if (i >= count) return;
-    SceneView sc = path_scene(tris, nodes, mats, lights, &frame);
-    SampleSource src = smp_chain(state, 0u, 1u, rng_key(seed, first + i, 0u), SMP_LARGE, 0u);
-    EvalResult s = mlt_checked(eval_state(&sc, &frame, &src), stats);
-    lum[i] = path_luminance(s.f);
+    __local uint l_count[MLT_COUNTS];
+    mlt_zero_counts(l_count);
+    barrier(CLK_LOCAL_MEM_FENCE);
+    uint i = get_global_id(0), nonfinite = 0u;
+    if (i < count) {
+        SceneView sc = path_scene(tris, nodes, mats, lights, &frame);
+        SampleSource src = smp_chain(state, 0u, 1u, rng_key(seed, first + i, 0u), SMP_LARGE, 0u);
+        EvalResult s = mlt_checked(eval_state(&sc, &frame, &src), &nonfinite);
+        lum[i] = path_luminance(s.f);
+        if (nonfinite) atomic_inc(&l_count[MLT_COUNT_NONFINITE]);
+    }
+    barrier(CLK_LOCAL_MEM_FENCE);
+    mlt_publish(stats, l_count, 0ul);
 }
 
 /* Starts chain c at the OMC path of sample picks[c] = (round r, index i):
@@ -26,16 +34,23 @@ __kernel void mlt_init(__global const Triangle* tris, __global const BvhNode* no
                        const Frame frame, __global uint* state, __global ChainValue* values,
                        const uint num_chains, const ulong omc_seed, __global const uint2* picks,
                        __global ulong* stats) {
-    uint c = get_global_id(0);
-    if (c >= num_chains) return;
-    SceneView sc = path_scene(tris, nodes, mats, lights, &frame);
-    uint2 pick = picks[c];
-    ulong round_seed = rng_mix64(omc_seed * 0x9E3779B97F4A7C15UL + (ulong)pick.x);
-    SampleSource src =
-        smp_chain(state, c, num_chains, rng_key(round_seed, pick.y, 0u), SMP_LARGE, 0u);
-    EvalResult s = mlt_checked(eval_state(&sc, &frame, &src), stats);
-    smp_commit(&src, s.bounces);
-    values[c] = chain_started(s.f, s.bounces);
+    __local uint l_count[MLT_COUNTS];
+    mlt_zero_counts(l_count);
+    barrier(CLK_LOCAL_MEM_FENCE);
+    uint c = get_global_id(0), nonfinite = 0u;
+    if (c < num_chains) {
+        SceneView sc = path_scene(tris, nodes, mats, lights, &frame);
+        uint2 pick = picks[c];
+        ulong round_seed = rng_mix64(omc_seed * 0x9E3779B97F4A7C15UL + (ulong)pick.x);
+        SampleSource src =
+            smp_chain(state, c, num_chains, rng_key(round_seed, pick.y, 0u), SMP_LARGE, 0u);
+        EvalResult s = mlt_checked(eval_state(&sc, &frame, &src), &nonfinite);
+        smp_commit(&src, s.bounces);
+        values[c] = chain_started(s.f, s.bounces);
+        if (nonfinite) atomic_inc(&l_count[MLT_COUNT_NONFINITE]);
+    }
+    barrier(CLK_LOCAL_MEM_FENCE);
+    mlt_publish(stats, l_count, 0ul);
 }
 
 /* One Metropolis step of every chain with K proposals each (split-transition
@@ -48,22 +63,24 @@ __kernel void mlt_init(__global const Triangle* tris, __global const BvhNode* no
  *    pixel if the chain moves away, and counts a run of rejections
  *    (doc/stability.md);
  * 3. the group's counters, with the luminance of its large steps (each an
- *    OMC sample of b's integrand), go to stats at once; the picked
+ *    OMC sample of b's integrand), go to its row of stats; the picked
  *    work-item commits its proposal. */
 __kernel void mlt_step(__global const Triangle* tris, __global const BvhNode* nodes,
                        __global const Material* mats, __global const LightEntry* lights,
                        const Frame frame, __global uint* state, __global ChainValue* values,
                        const uint num_threads, const uint proposals, const ulong seed,
-                       const uint iteration, const uint large_threshold, __global ulong* splat,
-                       __global ulong* stats, const uint stuck_run, __global uint* longest_run) {
+                       const uint iteration, const uint large_threshold,
+                       __global FilmWord* film0, __global FilmWord* film1,
+                       __global FilmWord* film2, __global FilmWord* film3,
+                       const FilmShape film_shape, __global ulong* stats, const uint stuck_run) {
     __local float l_a[MLT_GROUP];
     __local uint l_next[MLT_GROUP];
-    __local uint l_longest;
     __local uint l_count[MLT_COUNTS];
-    __local ulong l_large_lum;
+    __local ulong l_large_lum[MLT_GROUP];
     MltThread th = mlt_thread(num_threads, proposals);
     uint c = th.active ? th.chain : 0u;
     SceneView sc = path_scene(tris, nodes, mats, lights, &frame);
+    Film film = film_bind(film0, film1, film2, film3, film_shape);
     ChainValue x = values[c];
     ulong key = rng_key(seed, th.t, iteration);
     bool large = mlt_is_large(key, large_threshold);
@@ -71,49 +88,53 @@ __kernel void mlt_step(__global const Triangle* tris, __global const BvhNode* no
         smp_chain(state, c, th.chains, key, large ? SMP_LARGE : SMP_SMALL, chain_bounces(x));
     EvalResult y = eval_nothing();
     float a = 0.0f;
-    uint atomics = 0u;
-    if (th.active) a = mlt_try_proposal(&sc, &frame, &src, chain_f(x), splat, stats, &y, &atomics);
+    uint atomics = 0u, nonfinite = 0u;
+    if (th.active)
+        a = mlt_try_proposal(&sc, &frame, &src, chain_f(x), &film, key, &y, &nonfinite, &atomics);
 
     l_a[th.lid] = a;
-    if (th.lid == 0u) {
-        l_longest = 0u;
-        l_large_lum = 0ul;
-        mlt_zero_counts(l_count);
-    }
+    mlt_zero_counts(l_count);
     barrier(CLK_LOCAL_MEM_FENCE);
     if (th.active && th.i == 0u) {
         float stay = mlt_stay_weight(&l_a[th.first], proposals);
         uint next = mlt_select(&l_a[th.first], proposals, stay, mlt_select_number(key, proposals));
         l_next[th.lid] = next;
         uint pending =
-            mlt_settle_stay(&frame, state, c, th.chains, x, stay, next != 0u, splat, &atomics);
+            mlt_settle_stay(&frame, state, c, th.chains, x, stay, next != 0u, &film, key, &atomics);
         if (next == 0u)
-            mlt_stay(&values[c], x, pending, stuck_run, stats, &l_longest, &atomics);
+            mlt_stay(&values[c], x, pending, stuck_run, l_count);
         else
             atomic_inc(&l_count[MLT_COUNT_ACCEPTED]);
     }
-    if (th.active) mlt_count(l_count, &l_large_lum, large, y, atomics);
+    mlt_count(l_count, l_large_lum, th.active && large, y, nonfinite, atomics);
     barrier(CLK_LOCAL_MEM_FENCE);
-    if (th.lid == 0u) mlt_publish(stats, longest_run, l_count, l_large_lum, l_longest);
+    mlt_publish(stats, l_count, get_local_id(0) == 0u ? mlt_large_lum(l_large_lum) : 0ul);
 
     if (!th.active) return;
     if (l_next[th.first] == th.i + 1u) mlt_move(&src, &values[c], x, y);
 }
 
-/* What each chain still owes the film: its gathered stay weight at its
- * state's pixel, added to the film as mlt_splat would add it, or with
- * `undo` subtracted again. The host reads the film between the two, so
- * reading an image leaves the film exactly as it was (integer arithmetic)
- * and needs no buffer of its own. */
-__kernel void mlt_owed(const Frame frame, __global const uint* state,
-                       __global const ChainValue* values, const uint num_chains,
-                       __global ulong* splat, const uint undo) {
+/* What each chain owes the film: its gathered stay weight at its state's
+ * pixel, rounded with the numbers of (seed, chain, iteration). mode
+ * MLT_OWED_ADD adds it and MLT_OWED_UNDO subtracts it again, exactly: the
+ * host reads the film between the two, so reading an image changes
+ * nothing. MLT_OWED_FLUSH adds it and clears the chain's weight: the pass
+ * ends with nothing owed (src/render/mlt_film.hpp). */
+#define MLT_OWED_ADD 0u
+#define MLT_OWED_UNDO 1u
+#define MLT_OWED_FLUSH 2u
+__kernel void mlt_owed(const Frame frame, __global const uint* state, __global ChainValue* values,
+                       const uint num_chains, const ulong seed, const uint iteration,
+                       __global FilmWord* film0, __global FilmWord* film1,
+                       __global FilmWord* film2, __global FilmWord* film3,
+                       const FilmShape film_shape, const uint mode) {
     uint c = get_global_id(0);
     if (c >= num_chains) return;
+    Film film = film_bind(film0, film1, film2, film3, film_shape);
     ChainValue x = values[c];
-    ulong v[3];
-    if (!mlt_splat_value(chain_f(x), chain_stay_weight(x.stay), v)) return;
-    uint pixel = mlt_state_pixel(&frame, state, c, num_chains);
-    for (uint i = 0; i < 3u; ++i)
-        atom_add(&splat[3u * pixel + i], undo ? (ulong)0 - v[i] : v[i]);
+    if (!x.stay) return;
+    film_splat(&film, mlt_state_pixel(&frame, state, c, num_chains), chain_f(x),
+               chain_stay_weight(x.stay), rng_key(seed, c, iteration), MLT_DIM_ROUND_OWED,
+               mode == MLT_OWED_UNDO);
+    if (mode == MLT_OWED_FLUSH) values[c].stay = 0u;
 }

@@ -6,21 +6,29 @@
  * the luminance, so every splat has luminance equal to its weight. x's stay
  * weights are gathered in its ChainValue and splatted once, when the chain
  * moves away (MLT_EAGER_STAY, the reference build, splats them at every
- * step), and the step's counters are summed per work-group in local memory:
- * global atomics are the film's and one set of counters per group. */
+ * step). Splats go to the film through 32-bit atomics (cl/film.cl); the
+ * step's counters are summed per work-group in local memory and added to
+ * the group's own row of stats, so the only global atomics are the film's. */
 
-#pragma OPENCL EXTENSION cl_khr_int64_base_atomics : enable
-
-/* A work-group's counters in local memory, added to stats once per step. */
+/* A work-group's counters in local memory, added to its row of stats once
+ * per step. */
 #define MLT_COUNT_RAYS 0
 #define MLT_COUNT_LARGE 1
 #define MLT_COUNT_ACCEPTED 2
 #define MLT_COUNT_ATOMICS 3
-#define MLT_COUNTS 4
+#define MLT_COUNT_NONFINITE 4
+#define MLT_COUNT_STUCK 5
+#define MLT_COUNT_LONGEST 6 /* the longest run of rejections (a maximum) */
+#define MLT_COUNTS 7
 
-/* Dimensions of a step's stream reserved for the step itself. */
+/* Numbers of a step's stream reserved for the step itself: the large-step
+ * choice, the choice of the next state, and the rounding of the proposal's
+ * splat (3), of the state's (3) and of what a chain owes at a read (3). */
 #define MLT_DIM_LARGE 0xFFFFFFF0u
 #define MLT_DIM_ACCEPT 0xFFFFFFF1u
+#define MLT_DIM_ROUND_Y 0xFFFFFFF2u
+#define MLT_DIM_ROUND_X 0xFFFFFFF5u
+#define MLT_DIM_ROUND_OWED 0xFFFFFFF8u
 
 /* Where a work-item sits: proposal i of chain `chain` (of `chains`), whose
  * K work-items start at local index `first` of one work-group. */
@@ -41,36 +49,37 @@ inline MltThread mlt_thread(uint num_threads, uint proposals) {
     return th;
 }
 
-/* A non-finite F is dropped and counted: it contributes nothing and a chain
- * never moves to it. */
-inline EvalResult mlt_checked(EvalResult s, __global ulong* stats) {
+/* A non-finite F is dropped and counted in *nonfinite: it contributes
+ * nothing and a chain never moves to it. */
+inline EvalResult mlt_checked(EvalResult s, uint* nonfinite) {
     if (!path_finite(s.f)) {
-        atom_inc(&stats[MLT_STAT_NONFINITE]);
+        ++*nonfinite;
         s.f = (float3)(0.0f);
     }
     return s;
 }
 
-/* w * f / lum(f) in the film's fixed point (SPLAT_FRAC_BITS), per channel;
- * false if it adds nothing. */
-inline bool mlt_splat_value(float3 f, float w, ulong* c) {
-    float lum = path_luminance(f);
-    if (!(w > 0.0f) || !(lum > 0.0f)) return false;
-    float3 v = f * (w / lum) * (float)(1u << SPLAT_FRAC_BITS);
-    c[0] = (ulong)(v.x + 0.5f);
-    c[1] = (ulong)(v.y + 0.5f);
-    c[2] = (ulong)(v.z + 0.5f);
-    return true;
+/* The first work-item of a group clears the group's counters. */
+inline void mlt_zero_counts(__local uint* count) {
+    if (get_local_id(0) != 0u) return;
+    for (uint i = 0; i < MLT_COUNTS; ++i)
+        count[i] = 0u;
 }
 
-/* Adds w * f / lum(f) to a pixel; returns the global atomics it made. */
-inline uint mlt_splat(__global ulong* splat, uint pixel, float3 f, float w) {
-    ulong c[3];
-    if (!mlt_splat_value(f, w, c)) return 0u;
-    atom_add(&splat[3u * pixel + 0u], c[0]);
-    atom_add(&splat[3u * pixel + 1u], c[1]);
-    atom_add(&splat[3u * pixel + 2u], c[2]);
-    return 3u;
+/* After a barrier, the first work-item adds the group's counters (and the
+ * sum of its large steps' luminances, `large_lum`) to the group's row of
+ * stats: plain arithmetic, as no other work-item writes that row. */
+inline void mlt_publish(__global ulong* stats, __local const uint* count, ulong large_lum) {
+    if (get_local_id(0) != 0u) return;
+    __global ulong* row = stats + (size_t)get_group_id(0) * MLT_STAT_COUNT;
+    row[MLT_STAT_RAYS] += count[MLT_COUNT_RAYS];
+    row[MLT_STAT_LARGE] += count[MLT_COUNT_LARGE];
+    row[MLT_STAT_ACCEPTED] += count[MLT_COUNT_ACCEPTED];
+    row[MLT_STAT_ATOMICS] += count[MLT_COUNT_ATOMICS];
+    row[MLT_STAT_NONFINITE] += count[MLT_COUNT_NONFINITE];
+    row[MLT_STAT_STUCK] += count[MLT_COUNT_STUCK];
+    row[MLT_STAT_LARGE_LUM] += large_lum;
+    row[MLT_STAT_LONGEST] = max(row[MLT_STAT_LONGEST], (ulong)count[MLT_COUNT_LONGEST]);
 }
 
 /* A step's proposal is large when its stream's number MLT_DIM_LARGE is below
@@ -82,15 +91,13 @@ inline bool mlt_is_large(ulong key, uint large_threshold) {
 /* Evaluates the proposal y that src defines (lazily), splats a * F(y)/I(y)
  * at its pixel and returns a = min(1, I(y)/I(x)) (1 where I(x) = 0). */
 inline float mlt_try_proposal(const SceneView* sc, const Frame* frame, SampleSource* src, float3 fx,
-                              __global ulong* splat, __global ulong* stats, EvalResult* y,
+                              const Film* film, ulong key, EvalResult* y, uint* nonfinite,
                               uint* atomics) {
     float ix = path_luminance(fx);
-    EvalResult r = eval_state(sc, frame, src);
-    if (!path_finite(r.f)) ++*atomics;
-    *y = mlt_checked(r, stats);
+    *y = mlt_checked(eval_state(sc, frame, src), nonfinite);
     float iy = path_luminance(y->f);
     float a = ix > 0.0f ? fmin(1.0f, iy / ix) : 1.0f;
-    *atomics += mlt_splat(splat, y->pixel, y->f, a);
+    *atomics += film_splat(film, y->pixel, y->f, a, key, MLT_DIM_ROUND_Y, false);
     return a;
 }
 
@@ -132,30 +139,27 @@ inline uint mlt_select(__local const float* a, uint proposals, float stay, float
  * MLT_STAY_FLUSH (with MLT_EAGER_STAY: at once). Returns the weight still
  * pending, in the fixed point of ChainValue.stay. */
 inline uint mlt_settle_stay(const Frame* frame, __global const uint* state, uint chain, uint chains,
-                            ChainValue x, float stay, bool moves, __global ulong* splat,
+                            ChainValue x, float stay, bool moves, const Film* film, ulong key,
                             uint* atomics) {
     uint pending = x.stay + chain_stay_fixed(stay);
 #ifndef MLT_EAGER_STAY
     if (!moves && pending < MLT_STAY_FLUSH) return pending;
 #endif
-    *atomics += mlt_splat(splat, mlt_state_pixel(frame, state, chain, chains), chain_f(x),
-                          chain_stay_weight(pending));
+    *atomics += film_splat(film, mlt_state_pixel(frame, state, chain, chains), chain_f(x),
+                           chain_stay_weight(pending), key, MLT_DIM_ROUND_X, false);
     return 0u;
 }
 
 /* The chain stays at x with `pending` weight gathered: its run of
  * rejections grows; a chain that becomes stuck is counted once
- * (MLT_STAT_STUCK); *longest keeps the longest run of the work-group. */
+ * (MLT_COUNT_STUCK), and the group keeps its longest run. */
 inline void mlt_stay(__global ChainValue* value, ChainValue x, uint pending, uint stuck_run,
-                     __global ulong* stats, __local uint* longest, uint* atomics) {
+                     __local uint* count) {
     ChainValue v = chain_stayed(x, stuck_run);
-    if (chain_stuck(v) && !chain_stuck(x)) {
-        atom_inc(&stats[MLT_STAT_STUCK]);
-        ++*atomics;
-    }
+    if (chain_stuck(v) && !chain_stuck(x)) atomic_inc(&count[MLT_COUNT_STUCK]);
     value->meta = v.meta;
     value->stay = pending;
-    atomic_max(longest, chain_run(v));
+    atomic_max(&count[MLT_COUNT_LONGEST], chain_run(v));
 }
 
 /* The chain moves to the proposal y of this work-item: its numbers are
@@ -165,47 +169,28 @@ inline void mlt_move(SampleSource* src, __global ChainValue* value, ChainValue x
     *value = chain_moved(x, y.f, y.bounces);
 }
 
-inline void mlt_zero_counts(__local uint* count) {
-    for (uint i = 0; i < MLT_COUNTS; ++i)
-        count[i] = 0u;
-}
-
 /* A large step's luminance in the fixed point of MLT_STAT_LARGE_LUM. */
 inline ulong mlt_b_sample(float lum) {
     return (ulong)(fmin(lum, MLT_B_MAX_SAMPLE) * (float)(1u << MLT_B_FRAC_BITS) + 0.5f);
 }
 
-/* A work-item's share of the group's counters: rays, large steps and their
- * luminance, global atomics. */
+/* A work-item's share of the group's counters: rays, large steps,
+ * non-finite results, global atomics; and in large_lum[lid] its large
+ * step's luminance (0 if small), which the group sums in a fixed order. */
 inline void mlt_count(__local uint* count, __local ulong* large_lum, bool large, EvalResult y,
-                      uint atomics) {
+                      uint nonfinite, uint atomics) {
     atomic_add(&count[MLT_COUNT_RAYS], y.rays);
-    if (large) {
-        atomic_inc(&count[MLT_COUNT_LARGE]);
-        ulong v = mlt_b_sample(path_luminance(y.f));
-        if (v) atom_add(large_lum, v);
-    }
+    if (large) atomic_inc(&count[MLT_COUNT_LARGE]);
+    large_lum[get_local_id(0)] = large ? mlt_b_sample(path_luminance(y.f)) : 0ul;
+    if (nonfinite) atomic_add(&count[MLT_COUNT_NONFINITE], nonfinite);
     if (atomics) atomic_add(&count[MLT_COUNT_ATOMICS], atomics);
 }
 
-/* Adds the group's counters and longest run to the global ones, counting
- * the atomics this takes as well. */
-inline void mlt_publish(__global ulong* stats, __global uint* longest_run,
-                        __local const uint* count, ulong large_lum, uint longest) {
-    uint n = 1u; /* the last add below */
-    if (large_lum) {
-        atom_add(&stats[MLT_STAT_LARGE_LUM], large_lum);
-        ++n;
-    }
-    if (longest > 0u) {
-        atomic_max(longest_run, longest);
-        ++n;
-    }
-    const uint stat[3] = {MLT_STAT_RAYS, MLT_STAT_LARGE, MLT_STAT_ACCEPTED};
-    for (uint i = 0; i < 3u; ++i)
-        if (count[i]) {
-            atom_add(&stats[stat[i]], (ulong)count[i]);
-            ++n;
-        }
-    atom_add(&stats[MLT_STAT_ATOMICS], (ulong)(count[MLT_COUNT_ATOMICS] + n));
+/* After a barrier: the group's large-step luminances, summed in local order
+ * (integers, so the sum is exact and repeatable). */
+inline ulong mlt_large_lum(__local const ulong* large_lum) {
+    ulong sum = 0ul;
+    for (uint i = 0; i < get_local_size(0); ++i)
+        sum += large_lum[i];
+    return sum;
 }

@@ -108,12 +108,25 @@ typedef struct {
 #define CHAIN_RUN_SHIFT 9
 #define CHAIN_RUN_MAX 0x7FFFFFu
 
-/* Splats are accumulated as 64-bit fixed-point integers with this many
- * fraction bits, so sums are exact and do not depend on the order in which
- * work-items add them (deterministic for a given seed and device). */
-#define SPLAT_FRAC_BITS 24
+/* The MLT film on the device (cl/film.cl): pixel p lies in band
+ * p / band_pixels at pixel index p % band_pixels, as three words (R, G, B)
+ * of fixed point with frac_bits fraction bits; scale = 2^frac_bits. Words
+ * are 32-bit, except in the 64-bit reference build (FILM_ATOMICS64), whose
+ * one band has FILM64_FRAC_BITS. 16 bytes. */
+typedef struct {
+    u32 band_pixels;
+    u32 bands;
+    u32 frac_bits;
+    f32 scale;
+} FilmShape;
 
-/* Counters of an MLT render, 64-bit each, in this order. */
+#define FILM_MAX_BANDS 4
+#define FILM64_FRAC_BITS 24
+
+/* Counters of an MLT render, 64-bit each, in this order. Each work-group of
+ * MLT_GROUP work-items owns one row of MLT_STAT_COUNT of them and adds to it
+ * with plain arithmetic (no 64-bit atomics); the host sums the rows (and
+ * takes the largest MLT_STAT_LONGEST). */
 #define MLT_STAT_ACCEPTED 0
 #define MLT_STAT_LARGE 1
 #define MLT_STAT_NONFINITE 2
@@ -121,7 +134,13 @@ typedef struct {
 #define MLT_STAT_STUCK 4     /* chains that have been stuck */
 #define MLT_STAT_ATOMICS 5   /* atomic operations on global memory by the steps */
 #define MLT_STAT_LARGE_LUM 6 /* sum of I(y) over large steps, MLT_B_FRAC_BITS fixed point */
-#define MLT_STAT_COUNT 7
+#define MLT_STAT_LONGEST 7   /* longest run of rejections of a chain */
+#define MLT_STAT_COUNT 8
+
+/* Counters of a path-traced render, per work-group of the pixels as above. */
+#define PT_STAT_RAYS 0
+#define PT_STAT_NONFINITE 1
+#define PT_STAT_COUNT 2
 
 /* Fraction bits of the large steps' luminance sum: exact, order-free sums,
  * so b and the image stay repeatable for a seed. One sample adds at most

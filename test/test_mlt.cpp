@@ -263,14 +263,16 @@ TEST(MltPrecision, PackedAndFloat32StatesAgreeWithinNoise) {
     }
 }
 
-// Splats are summed in fixed point, so an MLT image depends only on the seed
-// (and the device), not on the order in which work-items finish.
+// Splats are summed in fixed point and rounded with the step's numbers, so
+// an MLT image depends only on the seed (and the device), not on the order
+// in which work-items finish; the film is drained every 2 steps here.
 TEST(MltDeterminism, SameSeedSameImage) {
     DeviceScene ds = prepare_scene(test::scene("cornell-glass", 24, 24));
     std::vector<float> images[2];
     for (auto& img : images) {
         MltOptions opt;
         opt.threads = 2048;
+        opt.film_pass_mutations = 4096;
         opt.seed = 77;
         opt.burn_in_iters = 8;
         MltRenderer mlt(test::cl(), ds, opt);
@@ -293,7 +295,8 @@ TEST(MltDeterminism, SameSeedSameImage) {
 // steps at up to 16 a step (past 256 a weight not flushed would wrap 32
 // bits); cornell moves them often.
 // Reading the image mid-render changes nothing: the weights still pending
-// are added to the film for the read and taken out again (mlt_owed).
+// are added to the film for the read and taken out again (mlt_owed). Both
+// renders use the 64-bit reference film, whose rounding is 2^-24.
 TEST(MltStaySplat, GatheredStaysEqualEagerSplatsWithinRounding) {
     struct Case {
         const char* name;
@@ -312,6 +315,7 @@ TEST(MltStaySplat, GatheredStaysEqualEagerSplatsWithinRounding) {
             opt.seed = 5;
             opt.proposals = c.proposals;
             opt.eager_stay = eager;
+            opt.film_atomics64 = true;
             MltRenderer mlt(test::cl(), ds, opt);
             mlt.prepare();
             mlt.step(150);
@@ -343,19 +347,21 @@ TEST(MltStaySplat, GatheredStaysEqualEagerSplatsWithinRounding) {
     }
 }
 
-// Reading the image mid-render leaves the render as it was, bit for bit.
+// Reading the image mid-render leaves the render as it was, bit for bit,
+// between drains of the film (every 3 steps here) and right after one.
 TEST(MltStaySplat, ReadingTheImageChangesNothing) {
     DeviceScene ds = prepare_scene(test::scene("cornell", 24, 24));
     std::vector<float> images[2];
     for (int reads = 0; reads < 2; ++reads) {
         MltOptions opt;
         opt.threads = 1024;
+        opt.film_pass_mutations = 3072;
         opt.seed = 8;
         opt.burn_in_iters = 4;
         MltRenderer mlt(test::cl(), ds, opt);
         mlt.prepare();
-        for (int k = 0; k < 4; ++k) {
-            mlt.step(8);
+        for (int k = 0; k < 8; ++k) {
+            mlt.step(k % 2 ? 2 : 4);
             if (reads) mlt.image();
         }
         images[reads] = mlt.image().rgb;

@@ -3,6 +3,7 @@
 #include "app/cli.hpp"
 #include "app/commands.hpp"
 #include "base/error.hpp"
+#include "device/device_profile.hpp"
 #include "device/memory_plan.hpp"
 #include "device/scan.hpp"
 
@@ -17,12 +18,13 @@ struct BudgetRow {
     std::uint64_t chain_packed, chain_float32, chains, state, other, total, naive;
 };
 
-BudgetRow budget_row(DeviceScene& ds, int depth, const ChainShape& shape, const DeviceInfo& dev) {
+BudgetRow budget_row(DeviceScene& ds, int depth, const ChainShape& shape, const DeviceInfo& dev,
+                     const DeviceBudget& budget) {
     SceneFeatures f = ds.layout.features;
     f.depth = depth;
     ds.layout = make_layout(f);
     ds.frame.depth = std::uint32_t(depth);
-    MemoryPlan plan = plan_mlt(ds, shape, scan_work_group(dev));
+    MemoryPlan plan = plan_mlt(ds, shape, scan_work_group(dev), budget.max_alloc_bytes);
     BudgetRow r;
     r.depth = depth;
     r.bits_per_bounce = ds.layout.bounce_bits;
@@ -76,6 +78,26 @@ void print_rows(const std::vector<BudgetRow>& rows, BudgetFormat fmt) {
     if (fmt == BudgetFormat::Json) std::printf("]\n");
 }
 
+// The film's share at the scene's depth, and the least device memory that
+// renders this scene and film by MLT (at kMinThreads) and by PT.
+void print_film(const DeviceScene& ds, const ChainShape& shape, const DeviceInfo& dev,
+                const DeviceBudget& budget) {
+    MemoryPlan mlt = plan_mlt(ds, shape, scan_work_group(dev), budget.max_alloc_bytes);
+    ChainShape least = shape;
+    least.threads = kMinThreads;
+    std::uint64_t mlt_min = smallest_device_memory([&](std::uint64_t max_alloc) {
+        return plan_mlt(ds, least, scan_work_group(dev), max_alloc);
+    });
+    std::uint64_t pt_min = smallest_device_memory(
+        [&](std::uint64_t max_alloc) { return plan_pt(ds, max_alloc); });
+    std::printf("film %ux%u: %s in %u band(s), %.1f%% of the MLT render's %s; the least "
+                "device memory that renders it: %s by MLT (%u threads), %s by PT\n",
+                ds.frame.width, ds.frame.height, format_bytes(mlt.film()).c_str(),
+                mlt.film_bands(), 100.0 * double(mlt.film()) / double(mlt.total()),
+                format_bytes(mlt.total()).c_str(), format_bytes(mlt_min).c_str(), kMinThreads,
+                format_bytes(pt_min).c_str());
+}
+
 } // namespace
 
 int run_budget(const BudgetOptions& o) {
@@ -83,11 +105,15 @@ int run_budget(const BudgetOptions& o) {
     int max_depth = o.depth.value_or(scene.depth);
     if (max_depth < 1) max_depth = 1;
     scene.depth = max_depth;
+    if (o.width) scene.width = *o.width;
+    if (o.height) scene.height = *o.height;
     DeviceScene ds = prepare_scene(scene);
     std::vector<DeviceInfo> devs = cl_list_devices();
     if (o.device >= int(devs.size()))
         throw UsageError("--device: index " + std::to_string(o.device) + " out of range");
-    const DeviceInfo& dev = devs[o.device];
+    DeviceInfo dev = devs[o.device];
+    if (o.profile) dev = emulate_profile(dev, find_device_profile(*o.profile));
+    require_work_group(dev);
     DeviceBudget budget = device_budget(dev, o.device_mem);
     ChainShape shape;
     shape.proposals = o.proposals;
@@ -99,16 +125,18 @@ int run_budget(const BudgetOptions& o) {
         shape.threads = choose_threads(ds, shape, dev, budget).threads;
         check_chain_shape(shape);
     }
-    if (o.format == BudgetFormat::Table)
+    if (o.format == BudgetFormat::Table) {
         std::printf("%s on %s: %u threads%s, %u proposal(s) per chain; device memory %s, "
                     "max allocation %s%s\n",
                     o.scene.c_str(), dev.name.c_str(), shape.threads, o.threads ? "" : " (auto)",
                     shape.proposals, format_bytes(budget.global_bytes).c_str(),
                     format_bytes(budget.max_alloc_bytes).c_str(),
-                    budget.emulated ? " (--device-mem)" : "");
+                    budget.emulated ? " (emulated)" : "");
+        print_film(ds, shape, dev, budget);
+    }
     std::vector<BudgetRow> rows;
     for (int d = 1; d <= max_depth; ++d)
-        rows.push_back(budget_row(ds, d, shape, dev));
+        rows.push_back(budget_row(ds, d, shape, dev, budget));
     print_rows(rows, o.format);
     return 0;
 }

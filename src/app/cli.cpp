@@ -2,6 +2,7 @@
 
 #include "base/bits.hpp"
 #include "base/error.hpp"
+#include "device/device_profile.hpp"
 #include "image/image.hpp"
 #include "scene/scene.hpp"
 
@@ -51,6 +52,10 @@ Render options:
 
   --device-mem BYTES use at most this much device memory, as if the device had
                      only BYTES (suffixes K, M, G); its largest buffer is BYTES/4
+  --profile NAME     count the device as one of doc/devices.md (mali-g610,
+                     adreno-650, apple-m1, videocore-iv): its memory, largest
+                     allocation, compute units, work-group size, and whether
+                     it has 64-bit atomics (never more than the device has)
 
 PT options:
   --sampler sobol|random  Owen-scrambled Sobol points per pixel (default) or
@@ -70,12 +75,18 @@ MLT options:
   --stuck-run R      a chain that rejects R proposals in a row counts as stuck
                      (default 1000); the summary gives how many did and the
                      longest run, and a note warns when any did
+  --film-atomics 32|64  splat through 32-bit atomics into a film drained to the
+                     host (default; every device), or 64-bit atomics into one
+                     64-bit film (the reference build; needs
+                     cl_khr_int64_base_atomics)
 
 Budget options:
   --threads N|auto   as for render (default auto)
   --proposals K      proposals per chain: N threads keep N/K chain states (default 1)
   --depth D          report depths 1..D (default: the scene's depth)
+  --width W, --height H  the film (overrides the scene)
   --device-mem BYTES as for render
+  --profile NAME     as for render
   --format table|csv|json
   --device INDEX
 
@@ -223,6 +234,13 @@ RenderOptions parse_render(ArgReader& r) {
             o.threads = to_threads(flag, r.value(flag, arg));
         } else if (flag == "--device-mem") {
             o.device_mem = to_bytes(flag, r.value(flag, arg));
+        } else if (flag == "--profile") {
+            o.profile = find_device_profile(r.value(flag, arg)).name;
+        } else if (flag == "--film-atomics") {
+            std::string b = r.value(flag, arg);
+            if (b != "32" && b != "64")
+                throw UsageError("--film-atomics: '" + b + "' is not 32 or 64");
+            o.film_atomics64 = b == "64";
         } else if (flag == "--proposals") {
             o.proposals = to_proposals(flag, r.value(flag, arg));
         } else if (flag == "--spp") {
@@ -304,6 +322,12 @@ BudgetOptions parse_budget(ArgReader& r) {
             o.depth = int(to_int(flag, r.value(flag, arg), 1, kMaxDepth));
         } else if (flag == "--device-mem") {
             o.device_mem = to_bytes(flag, r.value(flag, arg));
+        } else if (flag == "--profile") {
+            o.profile = find_device_profile(r.value(flag, arg)).name;
+        } else if (flag == "--width") {
+            o.width = int(to_int(flag, r.value(flag, arg), 1, kMaxFilmSide));
+        } else if (flag == "--height") {
+            o.height = int(to_int(flag, r.value(flag, arg), 1, kMaxFilmSide));
         } else if (flag == "--device") {
             o.device = int(to_int(flag, r.value(flag, arg), 0, 1 << 20));
         } else if (flag == "--format") {

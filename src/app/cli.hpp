@@ -24,6 +24,8 @@ struct RenderOptions {
     std::optional<std::uint32_t> threads; // unset: auto (src/memory_plan.hpp)
     std::uint32_t proposals = 1;          // K: threads per chain
     std::optional<std::uint64_t> device_mem;
+    std::optional<std::string> profile; // --profile: a device of doc/devices.md
+    bool film_atomics64 = false;        // --film-atomics 64
     bool burn_in = true;
     std::uint32_t burn_in_iters = MltOptions().burn_in_iters;
     std::uint32_t stuck_run = MltOptions().stuck_run;
@@ -51,6 +53,8 @@ struct BudgetOptions {
     std::uint32_t proposals = 1;
     std::optional<int> depth;
     std::optional<std::uint64_t> device_mem;
+    std::optional<std::string> profile;
+    std::optional<int> width, height;
     BudgetFormat format = BudgetFormat::Table;
     int device = 0;
 };

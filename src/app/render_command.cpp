@@ -5,6 +5,7 @@
 #include "base/clock.hpp"
 #include "base/error.hpp"
 #include "base/interrupt.hpp"
+#include "device/device_profile.hpp"
 #include "device/memory_plan.hpp"
 #include "image/image_metrics.hpp"
 #include "render/convergence_log.hpp"
@@ -37,35 +38,48 @@ void check_output_dirs(const std::vector<std::string>& outs, const char* flag = 
 // Thread count for MLT (auto or checked) such that the render fits the
 // device; PT only has to fit. Says what it chose unless quiet.
 std::uint32_t fit_to_device(const RenderOptions& o, const ClContext& cl, const DeviceScene& ds) {
+    require_work_group(cl.device());
     DeviceBudget budget = device_budget(cl.device(), o.device_mem);
     std::string allowed =
         format_bytes(std::uint64_t(kMemoryFraction * double(budget.global_bytes)));
     if (o.method == Method::Pt) {
-        MemoryPlan plan = plan_pt(ds);
+        MemoryPlan plan = plan_pt(ds, budget.max_alloc_bytes);
         if (!plan_fits(plan, budget))
-            throw InputError("not enough device memory: a " + std::to_string(ds.frame.width) + "x" +
-                             std::to_string(ds.frame.height) + " path-traced film needs " +
-                             format_bytes(plan.total()) + " (largest buffer " +
-                             format_bytes(plan.largest()) + "); the device allows " + allowed +
-                             " (max allocation " + format_bytes(budget.max_alloc_bytes) + ")");
+            throw InputError(
+                "not enough device memory: a " + std::to_string(ds.frame.width) + "x" +
+                std::to_string(ds.frame.height) + " path-traced film needs " +
+                format_bytes(plan.total()) + " (largest buffer " + format_bytes(plan.largest()) +
+                "); the device allows " + allowed + " (max allocation " +
+                format_bytes(budget.max_alloc_bytes) + "); it would take " +
+                format_bytes(smallest_device_memory(
+                    [&](std::uint64_t max_alloc) { return plan_pt(ds, max_alloc); })) +
+                " of device memory");
+        if (!o.quiet)
+            std::printf("film: %s in %u band(s); device memory %s of %s allowed\n",
+                        format_bytes(plan.film()).c_str(), plan.film_bands(),
+                        format_bytes(plan.total()).c_str(), allowed.c_str());
         return 0;
     }
     ChainShape shape;
     shape.proposals = o.proposals;
+    shape.film_atomics64 = o.film_atomics64;
     if (o.threads) {
         shape.threads = *o.threads;
         check_chain_shape(shape);
         MemoryPlan plan = check_threads(ds, shape, cl.device(), budget);
         if (!o.quiet)
-            std::printf("threads: %u (given); device memory %s of %s allowed\n", *o.threads,
+            std::printf("threads: %u (given); film %s in %u band(s); device memory %s of %s "
+                        "allowed\n",
+                        *o.threads, format_bytes(plan.film()).c_str(), plan.film_bands(),
                         format_bytes(plan.total()).c_str(), allowed.c_str());
         return *o.threads;
     }
     ThreadChoice c = choose_threads(ds, shape, cl.device(), budget);
     if (!o.quiet)
-        std::printf("threads: %u (auto: %u keep the device busy, reduced %ux to fit); device "
-                    "memory %s of %s allowed\n",
+        std::printf("threads: %u (auto: %u keep the device busy, reduced %ux to fit); film %s "
+                    "in %u band(s); device memory %s of %s allowed\n",
                     c.threads, busy_threads(cl.device()), c.reduction,
+                    format_bytes(c.plan.film()).c_str(), c.plan.film_bands(),
                     format_bytes(c.plan.total()).c_str(), allowed.c_str());
     return c.threads;
 }
@@ -73,8 +87,11 @@ std::uint32_t fit_to_device(const RenderOptions& o, const ClContext& cl, const D
 std::unique_ptr<Integrator> make_integrator(const RenderOptions& o, const ClContext& cl,
                                             const DeviceScene& ds) {
     std::uint32_t threads = fit_to_device(o, cl, ds);
-    if (o.method == Method::Pt) return std::make_unique<PathTracer>(cl, ds, o.seed, o.sampler);
+    std::uint64_t max_alloc = device_budget(cl.device(), o.device_mem).max_alloc_bytes;
+    if (o.method == Method::Pt)
+        return std::make_unique<PathTracer>(cl, ds, o.seed, o.sampler, max_alloc);
     MltOptions m;
+    m.max_alloc_bytes = max_alloc;
     m.threads = threads;
     m.proposals = o.proposals;
     m.large_step = *o.large_step;
@@ -82,6 +99,7 @@ std::unique_ptr<Integrator> make_integrator(const RenderOptions& o, const ClCont
     m.burn_in = o.burn_in;
     m.burn_in_iters = o.burn_in_iters;
     m.stuck_run = o.stuck_run;
+    m.film_atomics64 = o.film_atomics64;
     return std::make_unique<MltRenderer>(cl, ds, m);
 }
 
@@ -103,6 +121,7 @@ int run_render(const RenderOptions& o) {
                                                scene.height);
     DeviceScene ds = prepare_scene(scene);
     ClContext cl(o.device);
+    if (o.profile) cl.emulate(emulate_profile(cl.device(), find_device_profile(*o.profile)));
     std::unique_ptr<Integrator> method = make_integrator(o, cl, ds);
     double setup_s = seconds_since(t_setup);
 

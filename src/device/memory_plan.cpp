@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <functional>
 
 namespace smallmlt {
 
@@ -29,6 +30,25 @@ std::uint64_t pixels(const DeviceScene& ds) {
 
 bool is_chain_state(const std::string& name) {
     return name == "state" || name == "values";
+}
+
+bool is_film(const std::string& name) {
+    return name.rfind("film band", 0) == 0;
+}
+
+void add_film(MemoryPlan& p, std::uint64_t pixels, std::uint64_t bytes_per_pixel,
+              std::uint64_t max_alloc) {
+    FilmBands split = film_bands(pixels, bytes_per_pixel, max_alloc);
+    for (std::uint32_t b = 0; b < split.bands; ++b) {
+        std::uint64_t first = b * split.band_pixels;
+        std::uint64_t n = std::min(split.band_pixels, pixels - first);
+        p.buffers.push_back({"film band " + std::to_string(b), n * bytes_per_pixel, false});
+    }
+}
+
+// Rows of per-work-group counters for `items` work-items.
+std::uint64_t group_rows(std::uint64_t items) {
+    return (items + kDefaultWorkGroup - 1) / kDefaultWorkGroup;
 }
 
 } // namespace
@@ -60,24 +80,55 @@ std::uint64_t MemoryPlan::sum(bool chain_state) const {
     return t;
 }
 
-MemoryPlan plan_pt(const DeviceScene& ds) {
+std::uint64_t MemoryPlan::film() const {
+    std::uint64_t t = 0;
+    for (const PlannedBuffer& b : buffers)
+        if (is_film(b.name)) t += device_alloc_bytes(b.bytes);
+    return t;
+}
+
+std::uint32_t MemoryPlan::film_bands() const {
+    return std::uint32_t(std::count_if(buffers.begin(), buffers.end(),
+                                       [](const PlannedBuffer& b) { return is_film(b.name); }));
+}
+
+FilmBands film_bands(std::uint64_t pixels, std::uint64_t bytes_per_pixel, std::uint64_t max_alloc) {
+    std::uint64_t fit = max_alloc / bytes_per_pixel / kDefaultWorkGroup * kDefaultWorkGroup;
+    if (fit == 0)
+        throw InputError("the device's largest allocation, " + format_bytes(max_alloc) +
+                         ", cannot hold the film of one work-group of " +
+                         std::to_string(kDefaultWorkGroup) + " pixels");
+    FilmBands b;
+    std::uint64_t whole = (pixels + kDefaultWorkGroup - 1) / kDefaultWorkGroup * kDefaultWorkGroup;
+    b.band_pixels = std::min(fit, std::max<std::uint64_t>(whole, kDefaultWorkGroup));
+    b.bands = std::uint32_t(std::max<std::uint64_t>(1, (pixels + b.band_pixels - 1) / b.band_pixels));
+    return b;
+}
+
+std::uint64_t mlt_film_pixel_bytes(bool atomics64) {
+    return 3 * (atomics64 ? sizeof(std::uint64_t) : sizeof(std::uint32_t));
+}
+
+MemoryPlan plan_pt(const DeviceScene& ds, std::uint64_t max_alloc) {
     MemoryPlan p;
     add_scene(p, ds);
-    p.buffers.push_back({"accumulator", pixels(ds) * 4 * sizeof(float), false});
-    p.buffers.push_back({"ray counts", pixels(ds) * sizeof(std::uint64_t), false});
+    add_film(p, pixels(ds), kPtFilmPixelBytes, max_alloc);
+    p.buffers.push_back(
+        {"stats", group_rows(pixels(ds)) * PT_STAT_COUNT * sizeof(std::uint64_t), false});
     return p;
 }
 
-MemoryPlan plan_mlt(const DeviceScene& ds, const ChainShape& shape, std::size_t scan_wg) {
+MemoryPlan plan_mlt(const DeviceScene& ds, const ChainShape& shape, std::size_t scan_wg,
+                    std::uint64_t max_alloc) {
     MemoryPlan p;
     add_scene(p, ds);
     std::uint64_t chains = shape.chains(), threads = shape.threads;
     std::uint64_t words = ds.layout.chain_words(shape.float32_states);
     p.buffers.push_back({"state", words * chains * 4, false});
     p.buffers.push_back({"values", chains * sizeof(ChainValue), false});
-    p.buffers.push_back({"splat", pixels(ds) * 3 * sizeof(std::uint64_t), false});
-    p.buffers.push_back({"stats", MLT_STAT_COUNT * sizeof(std::uint64_t), false});
-    p.buffers.push_back({"longest run", sizeof(std::uint32_t), false});
+    add_film(p, pixels(ds), mlt_film_pixel_bytes(shape.film_atomics64), max_alloc);
+    p.buffers.push_back(
+        {"stats", group_rows(threads) * MLT_STAT_COUNT * sizeof(std::uint64_t), false});
     // Each chain's start, (round, index) (cl/burnin.cl).
     p.buffers.push_back({"picks", chains * 2 * sizeof(std::uint32_t), false});
     p.buffers.push_back({"luminance", threads * sizeof(float), true});
@@ -113,6 +164,30 @@ bool plan_fits(const MemoryPlan& plan, const DeviceBudget& b) {
            plan.largest() <= b.max_alloc_bytes;
 }
 
+std::uint64_t smallest_device_memory(const std::function<MemoryPlan(std::uint64_t)>& plan_at) {
+    auto fits = [&](std::uint64_t m) {
+        try {
+            return plan_fits(plan_at(m / 4), DeviceBudget{m, m / 4, true});
+        } catch (const InputError&) {
+            return false; // the film cannot be split that finely
+        }
+    };
+    std::uint64_t lo = 0, hi = std::uint64_t(1) << 50; // fits at hi, not at lo
+    if (!fits(hi)) return hi;
+    while (hi - lo > 1) {
+        std::uint64_t mid = lo + (hi - lo) / 2;
+        (fits(mid) ? hi : lo) = mid;
+    }
+    return hi;
+}
+
+void require_work_group(const DeviceInfo& dev) {
+    if (dev.max_work_group < kDefaultWorkGroup)
+        throw InputError("device " + dev.name + " runs work-groups of at most " +
+                         std::to_string(dev.max_work_group) + " work-items; smallmlt's kernels " +
+                         "run in work-groups of " + std::to_string(kDefaultWorkGroup));
+}
+
 std::uint32_t busy_threads(const DeviceInfo& dev) {
     std::uint64_t want = std::uint64_t(std::max(1u, dev.compute_units)) *
                          std::max<std::uint64_t>(dev.max_work_group, 1) * 8;
@@ -125,24 +200,23 @@ std::uint32_t busy_threads(const DeviceInfo& dev) {
 namespace {
 
 MemoryPlan plan_for(const DeviceScene& ds, ChainShape shape, std::uint32_t threads,
-                    const DeviceInfo& dev) {
+                    const DeviceInfo& dev, const DeviceBudget& budget) {
     shape.threads = threads;
-    return plan_mlt(ds, shape, scan_work_group(dev));
+    return plan_mlt(ds, shape, scan_work_group(dev), budget.max_alloc_bytes);
 }
 
-// Smallest device memory on which `plan` fits.
-std::uint64_t memory_needed(const MemoryPlan& plan, bool emulated) {
-    std::uint64_t by_total = std::uint64_t(std::ceil(double(plan.total()) / kMemoryFraction));
-    return emulated ? std::max(by_total, 4 * plan.largest()) : by_total;
-}
-
-[[noreturn]] void too_small(const MemoryPlan& smallest, const DeviceBudget& budget) {
+[[noreturn]] void too_small(const DeviceScene& ds, const ChainShape& shape, const DeviceInfo& dev,
+                            const DeviceBudget& budget) {
+    MemoryPlan smallest = plan_for(ds, shape, kMinThreads, dev, budget);
+    std::uint64_t needed = smallest_device_memory([&](std::uint64_t max_alloc) {
+        return plan_for(ds, shape, kMinThreads, dev, DeviceBudget{0, max_alloc, true});
+    });
     throw InputError("not enough device memory: even " + std::to_string(kMinThreads) +
                      " threads need " + format_bytes(smallest.total()) + " (largest buffer " +
                      format_bytes(smallest.largest()) + "); the device allows " +
                      format_bytes(std::uint64_t(kMemoryFraction * double(budget.global_bytes))) +
                      " (max allocation " + format_bytes(budget.max_alloc_bytes) +
-                     "); it would take " + format_bytes(memory_needed(smallest, budget.emulated)) +
+                     "); it would take " + format_bytes(needed) +
                      " of device memory");
 }
 
@@ -153,22 +227,22 @@ ThreadChoice choose_threads(const DeviceScene& ds, ChainShape shape, const Devic
     ThreadChoice c;
     std::uint32_t start = busy_threads(dev);
     for (std::uint32_t n = start; n >= kMinThreads; n /= 2) {
-        c.plan = plan_for(ds, shape, n, dev);
+        c.plan = plan_for(ds, shape, n, dev, budget);
         if (plan_fits(c.plan, budget)) {
             c.threads = n;
             c.reduction = start / n;
             return c;
         }
     }
-    too_small(plan_for(ds, shape, kMinThreads, dev), budget);
+    too_small(ds, shape, dev, budget);
 }
 
 MemoryPlan check_threads(const DeviceScene& ds, const ChainShape& shape, const DeviceInfo& dev,
                          const DeviceBudget& budget) {
-    MemoryPlan plan = plan_for(ds, shape, shape.threads, dev);
+    MemoryPlan plan = plan_for(ds, shape, shape.threads, dev, budget);
     if (plan_fits(plan, budget)) return plan;
     std::uint32_t most = max_threads(ds, shape, dev, budget);
-    if (most == 0) too_small(plan_for(ds, shape, kMinThreads, dev), budget);
+    if (most == 0) too_small(ds, shape, dev, budget);
     throw UsageError("--threads " + std::to_string(shape.threads) + " needs " +
                      format_bytes(plan.total()) + " of device memory (largest buffer " +
                      format_bytes(plan.largest()) + "); at most " + std::to_string(most) +
@@ -177,12 +251,12 @@ MemoryPlan check_threads(const DeviceScene& ds, const ChainShape& shape, const D
 
 std::uint32_t max_threads(const DeviceScene& ds, ChainShape shape, const DeviceInfo& dev,
                           const DeviceBudget& budget) {
-    if (plan_fits(plan_for(ds, shape, shape.threads, dev), budget)) return shape.threads;
-    if (!plan_fits(plan_for(ds, shape, kMinThreads, dev), budget)) return 0;
+    if (plan_fits(plan_for(ds, shape, shape.threads, dev, budget), budget)) return shape.threads;
+    if (!plan_fits(plan_for(ds, shape, kMinThreads, dev, budget), budget)) return 0;
     std::uint32_t lo = kMinThreads, hi = shape.threads; // fits at lo, not at hi
     while (hi - lo > 1) {
         std::uint32_t mid = lo + (hi - lo) / 2;
-        (plan_fits(plan_for(ds, shape, mid, dev), budget) ? lo : hi) = mid;
+        (plan_fits(plan_for(ds, shape, mid, dev, budget), budget) ? lo : hi) = mid;
     }
     return lo;
 }

@@ -7,6 +7,7 @@
 #include "scene/device_scene.hpp"
 
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -25,6 +26,8 @@ struct MemoryPlan {
     std::uint64_t largest() const;                      // the biggest single buffer
     std::uint64_t bytes(const std::string& name) const; // requested size (0 if empty)
     std::uint64_t sum(bool chain_state) const;          // chain state buffers or the rest
+    std::uint64_t film() const;                         // the film's bands
+    std::uint32_t film_bands() const;                   // how many there are
 };
 
 // What a render stores per chain and how many chains it has.
@@ -32,6 +35,7 @@ struct ChainShape {
     std::uint32_t threads = 1u << 16;
     std::uint32_t proposals = 1; // K: threads per chain
     bool float32_states = false;
+    bool film_atomics64 = false; // the 64-bit reference film (MltOptions)
     std::uint32_t chains() const { return threads / proposals; }
 };
 
@@ -39,8 +43,26 @@ struct ChainShape {
 // chain's K work-items meet in one work-group) and divides the threads.
 void check_chain_shape(const ChainShape& shape);
 
-MemoryPlan plan_pt(const DeviceScene& ds);
-MemoryPlan plan_mlt(const DeviceScene& ds, const ChainShape& shape, std::size_t scan_wg);
+// A film of `pixels` split into bands that each fit one allocation: every
+// band but the last holds band_pixels, a multiple of kDefaultWorkGroup
+// (a work-group's pixels never straddle two bands). Throws InputError if
+// the largest allocation cannot hold one work-group's pixels.
+struct FilmBands {
+    std::uint64_t band_pixels = 0;
+    std::uint32_t bands = 0;
+};
+FilmBands film_bands(std::uint64_t pixels, std::uint64_t bytes_per_pixel, std::uint64_t max_alloc);
+
+constexpr std::uint64_t kNoAllocLimit = ~std::uint64_t(0);
+
+// Bytes per pixel of the films on the device.
+constexpr std::uint64_t kPtFilmPixelBytes = 3 * sizeof(float);
+std::uint64_t mlt_film_pixel_bytes(bool atomics64);
+
+// Every buffer of a render whose film's bands fit max_alloc bytes each.
+MemoryPlan plan_pt(const DeviceScene& ds, std::uint64_t max_alloc = kNoAllocLimit);
+MemoryPlan plan_mlt(const DeviceScene& ds, const ChainShape& shape, std::size_t scan_wg,
+                    std::uint64_t max_alloc = kNoAllocLimit);
 
 // What the render may use: the device's memory (or --device-mem) and its
 // largest single allocation.
@@ -59,6 +81,15 @@ constexpr std::uint32_t kMinThreads = 64; // one work-group: the smallest useful
 DeviceBudget device_budget(const DeviceInfo& dev, std::optional<std::uint64_t> device_mem);
 
 bool plan_fits(const MemoryPlan& plan, const DeviceBudget& b);
+
+// The smallest device memory M on which the plan that plan_at(M / 4) gives
+// fits, M / 4 being the largest allocation --device-mem M emulates (the
+// least OpenCL allows). plan_at may throw InputError (too small to split).
+std::uint64_t smallest_device_memory(const std::function<MemoryPlan(std::uint64_t)>& plan_at);
+
+// Throws InputError naming the device if its work-groups cannot hold
+// kDefaultWorkGroup work-items, the size every kernel runs in.
+void require_work_group(const DeviceInfo& dev);
 
 // Threads that keep the device busy: 8 work-groups of the largest size per
 // compute unit, rounded up to a power of two, within [2^10, 2^20].

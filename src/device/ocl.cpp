@@ -195,9 +195,34 @@ std::string cl_name_log_lines(const std::string& log, const std::vector<SourceSt
     return out + log.substr(pos);
 }
 
+void ClContext::emulate(const DeviceInfo& limited) {
+    cl_platform_id platform = info_.platform;
+    cl_device_id id = info_.id;
+    info_ = limited;
+    info_.platform = platform;
+    info_.id = id;
+}
+
+namespace {
+
+// Makes every 64-bit atomic function (cl_khr_int64_base_atomics and
+// _extended_atomics) a compile error naming what is missing; the 32-bit ones
+// are the atomic_* functions of OpenCL 1.1.
+std::string forbid_int64_atomics() {
+    std::string d;
+    for (const char* f : {"atom_add", "atom_sub", "atom_xchg", "atom_inc", "atom_dec",
+                          "atom_cmpxchg", "atom_min", "atom_max", "atom_and", "atom_or",
+                          "atom_xor"})
+        d += std::string("#define ") + f + "(...) " + f +
+             "_needs_cl_khr_int64_base_atomics_which_this_device_lacks\n";
+    return d;
+}
+
+} // namespace
+
 cl_program ClContext::build(const std::vector<std::string>& files,
                             const std::string& defines) const {
-    std::string src = defines;
+    std::string src = info_.int64_atomics ? defines : forbid_int64_atomics() + defines;
     std::vector<SourceStart> starts;
     for (const std::string& f : files) {
         src += "#line 1 \"" + f + "\"\n";

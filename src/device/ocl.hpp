@@ -35,6 +35,7 @@ struct DeviceInfo {
     std::uint32_t compute_units = 0;
     std::size_t max_work_group = 0;
     bool int64_atomics = false;
+    bool emulated = false; // limited by --profile or --device-mem (src/device_profile.hpp)
 };
 
 // Every device of every platform, in a stable order (the --device index).
@@ -49,6 +50,11 @@ class ClContext {
     ClContext& operator=(const ClContext&) = delete;
 
     const DeviceInfo& device() const { return info_; }
+    // From now on the device counts as `limited` (the same device with
+    // smaller figures, emulate_profile): budgets follow its memory, and a
+    // program built for a device without cl_khr_int64_base_atomics fails to
+    // compile if it uses a 64-bit atomic.
+    void emulate(const DeviceInfo& limited);
     cl_context context() const { return ctx_; }
     cl_command_queue queue() const { return queue_; }
 

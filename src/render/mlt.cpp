@@ -21,11 +21,12 @@ std::string program_defines(const ClContext& cl, const DeviceScene& ds, const Ml
                     std::to_string(kDefaultWorkGroup) + "u\n";
     if (opt.float32_states) d += "#define PSS_FLOAT32 1\n";
     if (opt.eager_stay) d += "#define MLT_EAGER_STAY 1\n";
+    if (opt.film_atomics64) d += "#define FILM_ATOMICS64 1\n";
     return d;
 }
 
 ChainShape chain_shape(const MltOptions& opt) {
-    return ChainShape{opt.threads, opt.proposals, opt.float32_states};
+    return ChainShape{opt.threads, opt.proposals, opt.float32_states, opt.film_atomics64};
 }
 
 const MltOptions& check_options(const MltOptions& opt) {
@@ -34,10 +35,18 @@ const MltOptions& check_options(const MltOptions& opt) {
     return opt;
 }
 
-const DeviceScene& require_atomics(const ClContext& cl, const DeviceScene& ds) {
-    mlt_require_device(cl.device());
+const DeviceScene& require_device(const ClContext& cl, const DeviceScene& ds,
+                                  const MltOptions& opt) {
+    mlt_require_device(cl.device(), opt);
     return ds;
 }
+
+std::uint64_t max_alloc(const ClContext& cl, const MltOptions& opt) {
+    return opt.max_alloc_bytes ? opt.max_alloc_bytes : cl.device().max_alloc_bytes;
+}
+
+// Modes of the mlt_owed kernel (cl/kernels_mlt.cl).
+constexpr cl_uint kOwedAdd = 0, kOwedUndo = 1, kOwedFlush = 2;
 
 // The kernels' rng_key (cl/rng.cl).
 std::uint64_t rng_key(std::uint64_t seed, std::uint32_t a, std::uint32_t b) {
@@ -92,11 +101,11 @@ void BurnInPicker::add_round(const ClBuffer& lum, const std::vector<float>& host
     pick_.run(cl_, count);
 }
 
-void mlt_require_device(const DeviceInfo& d) {
-    if (!d.int64_atomics)
+void mlt_require_device(const DeviceInfo& d, const MltOptions& opt) {
+    if (opt.film_atomics64 && !d.int64_atomics)
         throw InputError("device " + d.name +
-                         " lacks cl_khr_int64_base_atomics, which MLT splatting needs; "
-                         "use --method pt on it");
+                         " lacks cl_khr_int64_base_atomics, which the 64-bit film needs; "
+                         "leave out --film-atomics 64");
 }
 
 std::vector<std::string> mlt_program_files(const MltOptions& opt) {
@@ -104,28 +113,27 @@ std::vector<std::string> mlt_program_files(const MltOptions& opt) {
         "cl/shared_types.h",  "cl/rng.cl",         "cl/layout.cl",   "cl/pss.cl",
         "cl/sample_chain.cl", "cl/geometry.cl",    "cl/bvh.cl",      "cl/bsdf.cl",
         "cl/light.cl",        "cl/path.cl",        "cl/camera.cl",   "cl/eval_result.cl",
-        opt.evaluator,        "cl/chain_value.cl", "cl/mlt_step.cl", "cl/kernels_mlt.cl",
-        "cl/scan.cl",         "cl/burnin.cl"};
+        opt.evaluator,        "cl/chain_value.cl", "cl/film.cl",    "cl/mlt_step.cl",
+        "cl/kernels_mlt.cl",  "cl/scan.cl",        "cl/burnin.cl"};
     files.insert(files.end(), opt.extra_files.begin(), opt.extra_files.end());
     return files;
 }
 
 MltRenderer::MltRenderer(const ClContext& cl, const DeviceScene& ds, const MltOptions& opt)
-    : cl_(cl), ds_(require_atomics(cl, ds)), opt_(check_options(opt)),
-      plan_(plan_mlt(ds, chain_shape(opt), scan_work_group(cl.device()))),
+    : cl_(cl), ds_(require_device(cl, ds, opt)), opt_(check_options(opt)),
+      plan_(plan_mlt(ds, chain_shape(opt), scan_work_group(cl.device()), max_alloc(cl, opt))),
       program_(cl.build(mlt_program_files(opt), program_defines(cl, ds, opt))),
       k_lum_(program_.p, "mlt_luminance"), k_init_(program_.p, "mlt_init"),
       k_step_(program_.p, "mlt_step"), k_owed_(program_.p, "mlt_owed"), scene_(cl, ds),
       state_(cl, CL_MEM_READ_WRITE, plan_.bytes("state")),
       values_(cl, CL_MEM_READ_WRITE, plan_.bytes("values")),
-      splat_(cl, CL_MEM_READ_WRITE, plan_.bytes("splat")),
       stats_(cl, CL_MEM_READ_WRITE, plan_.bytes("stats")),
-      longest_run_(cl, CL_MEM_READ_WRITE, plan_.bytes("longest run")),
-      picks_(cl, CL_MEM_READ_WRITE, plan_.bytes("picks")) {
+      picks_(cl, CL_MEM_READ_WRITE, plan_.bytes("picks")),
+      film_(cl, pixels(),
+            plan_mlt_film(pixels(), opt.threads, max_alloc(cl, opt), opt.film_atomics64,
+                          opt.film_pass_mutations)) {
     state_.fill_zero(cl);
-    splat_.fill_zero(cl);
     stats_.fill_zero(cl);
-    longest_run_.fill_zero(cl);
     picks_.fill_zero(cl);
 }
 
@@ -197,17 +205,33 @@ void MltRenderer::init_chains() {
     cl_.finish("kernel mlt_init over " + std::to_string(chains()) + " chains");
 }
 
+void MltRenderer::owed(std::uint32_t mode) const {
+    k_owed_.set_args(ds_.frame, state_, values_, cl_uint(chains()),
+                     cl_ulong(derive_seed(opt_.seed, kPurposeStep)), cl_uint(iterations_),
+                     film_.band(0), film_.band(1), film_.band(2), film_.band(3),
+                     film_.plan().shape, cl_uint(mode));
+    k_owed_.enqueue(cl_, chains());
+}
+
 void MltRenderer::step(std::uint32_t n) {
     cl_ulong seed = derive_seed(opt_.seed, kPurposeStep);
     double p = std::clamp(double(opt_.large_step), 0.0, 1.0);
     cl_uint threshold = p >= 1.0 ? 0xFFFFFFFFu : cl_uint(p * 4294967296.0);
+    const std::uint32_t drain_every = film_.plan().steps_per_drain;
     Clock::time_point t0 = Clock::now();
     for (std::uint32_t i = 0; i < n; ++i) {
         cl_uint iteration = ++iterations_;
         k_step_.set_args(scene_.tris, scene_.nodes, scene_.mats, scene_.lights, ds_.frame, state_,
                          values_, cl_uint(opt_.threads), cl_uint(opt_.proposals), seed, iteration,
-                         threshold, splat_, stats_, cl_uint(opt_.stuck_run), longest_run_);
+                         threshold, film_.band(0), film_.band(1), film_.band(2), film_.band(3),
+                         film_.plan().shape, stats_, cl_uint(opt_.stuck_run));
         k_step_.enqueue(cl_, opt_.threads);
+        // The pass ends: every chain splats what it owes, and the film's
+        // words go to the host before the next pass could overflow them.
+        if (drain_every && iteration % drain_every == 0) {
+            owed(kOwedFlush);
+            film_.drain();
+        }
     }
     cl_.finish("kernel mlt_step over " + std::to_string(opt_.threads) + " threads");
     step_seconds_ += seconds_since(t0);
@@ -218,8 +242,12 @@ std::uint32_t MltRenderer::state_bytes_per_chain() const {
 }
 
 MltStats MltRenderer::stats() const {
-    cl_ulong s[MLT_STAT_COUNT];
-    stats_.read(cl_, s);
+    std::vector<cl_ulong> rows(stats_.bytes() / sizeof(cl_ulong));
+    stats_.read(cl_, rows.data());
+    cl_ulong s[MLT_STAT_COUNT] = {};
+    for (std::size_t r = 0; r + MLT_STAT_COUNT <= rows.size(); r += MLT_STAT_COUNT)
+        for (int i = 0; i < MLT_STAT_COUNT; ++i)
+            s[i] = i == MLT_STAT_LONGEST ? std::max(s[i], rows[r + i]) : s[i] + rows[r + i];
     MltStats out;
     out.mutations = std::uint64_t(iterations_) * opt_.threads;
     out.accepted = s[MLT_STAT_ACCEPTED];
@@ -229,9 +257,7 @@ MltStats MltRenderer::stats() const {
     out.stuck = s[MLT_STAT_STUCK];
     out.atomics = s[MLT_STAT_ATOMICS];
     out.large_lum = s[MLT_STAT_LARGE_LUM];
-    cl_uint longest = 0;
-    longest_run_.read(cl_, &longest);
-    out.longest_run = longest;
+    out.longest_run = std::uint32_t(s[MLT_STAT_LONGEST]);
     return out;
 }
 
@@ -295,18 +321,17 @@ std::string MltRenderer::summary(double) const {
 }
 
 Image MltRenderer::image() const {
-    std::vector<cl_ulong> acc(pixels() * 3);
     // The film with the stay weights the chains have gathered and not yet
     // splatted, which are then taken out again.
-    for (cl_uint undo : {0u, 1u}) {
-        k_owed_.set_args(ds_.frame, state_, values_, cl_uint(chains()), splat_, undo);
-        k_owed_.run(cl_, chains());
-        if (!undo) splat_.read(cl_, acc.data());
-    }
+    owed(kOwedAdd);
+    std::vector<std::uint64_t> acc = film_.read();
+    owed(kOwedUndo);
+    cl_.finish("kernel mlt_owed over " + std::to_string(chains()) + " chains");
     Image img(int(ds_.frame.width), int(ds_.frame.height));
     double mutations = double(iterations_) * opt_.threads;
     if (mutations == 0) return img;
-    double scale = b() * double(pixels()) / mutations / double(1u << SPLAT_FRAC_BITS);
+    double scale =
+        b() * double(pixels()) / mutations / double(film_.plan().shape.scale);
     for (std::size_t i = 0; i < acc.size(); ++i)
         img.rgb[i] = float(double(acc[i]) * scale);
     return img;

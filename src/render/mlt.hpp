@@ -8,6 +8,7 @@
 #include "device/scene_buffers.hpp"
 #include "image/image.hpp"
 #include "render/integrator.hpp"
+#include "render/mlt_film.hpp"
 #include "scene/device_scene.hpp"
 
 #include <cstdint>
@@ -32,6 +33,13 @@ struct MltOptions {
     std::uint32_t burn_in_iters = 32; // chosen by measurement (doc/RESULTS.md)
     bool float32_states = false;      // unpacked float32 states (reference build)
     bool eager_stay = false;          // splat x's stay weight at every step (reference build)
+    // The 64-bit film of 64-bit atomics (reference build; needs
+    // cl_khr_int64_base_atomics); the default needs only 32-bit ones.
+    bool film_atomics64 = false;
+    // The largest allocation the film's bands must fit (0: the device's).
+    std::uint64_t max_alloc_bytes = 0;
+    // Mutations between drains of the 32-bit film (src/render/mlt_film.hpp).
+    std::uint64_t film_pass_mutations = kFilmPassMutations;
     // A chain that rejects this many proposals in a row counts as stuck
     // (reported, not acted on; doc/stability.md).
     std::uint32_t stuck_run = kDefaultStuckRun;
@@ -42,9 +50,9 @@ struct MltOptions {
     std::vector<std::string> extra_files; // appended to the program (test probes)
 };
 
-// Throws InputError naming the device if it lacks what MLT needs (64-bit
-// atomics for the splats); path tracing needs none of it.
-void mlt_require_device(const DeviceInfo& d);
+// Throws InputError naming the device if it lacks what the options need:
+// 64-bit atomics for the 64-bit reference film.
+void mlt_require_device(const DeviceInfo& d, const MltOptions& opt);
 
 // Kernel files of the MLT program, in build order.
 std::vector<std::string> mlt_program_files(const MltOptions& opt);
@@ -154,6 +162,7 @@ class MltRenderer : public Integrator {
     std::uint32_t state_bytes_per_chain() const;
     // b * splats * pixels / mutations.
     Image image() const override;
+    const MltFilm& film() const { return film_; }
 
     // For tests: the raw buffers.
     const ClBuffer& state() const { return state_; }
@@ -169,7 +178,10 @@ class MltRenderer : public Integrator {
     ClKernel k_lum_, k_init_, k_step_;
     mutable ClKernel k_owed_; // run by image(), which leaves the film as it was
     SceneBuffers scene_;
-    ClBuffer state_, values_, splat_, stats_, longest_run_, picks_;
+    ClBuffer state_, values_, stats_, picks_;
+    MltFilm film_;
+    // Runs mlt_owed in `mode` (MLT_OWED_* of cl/kernels_mlt.cl).
+    void owed(std::uint32_t mode) const;
     struct BEstimate {
         double b = 0, rel_error = 0;
     };

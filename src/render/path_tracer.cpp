@@ -1,5 +1,6 @@
 #include "render/path_tracer.hpp"
 
+#include <algorithm>
 #include <cstdio>
 
 namespace smallmlt {
@@ -11,24 +12,42 @@ std::vector<std::string> pt_program_files(PtSampler sampler) {
             "cl/path.cl",        "cl/camera.cl", "cl/kernels_pt.cl"};
 }
 
+namespace {
+
+std::uint64_t max_alloc(const ClContext& cl, std::uint64_t given) {
+    return given ? given : cl.device().max_alloc_bytes;
+}
+
+} // namespace
+
 PathTracer::PathTracer(const ClContext& cl, const DeviceScene& ds, std::uint64_t seed,
-                       PtSampler sampler)
-    : cl_(cl), ds_(ds), seed_(seed), plan_(plan_pt(ds)),
+                       PtSampler sampler, std::uint64_t max_alloc_bytes)
+    : cl_(cl), ds_(ds), seed_(seed),
+      plan_(plan_pt(ds, max_alloc(cl, max_alloc_bytes))),
       program_(cl.build(pt_program_files(sampler), ds.layout.defines())),
       kernel_(program_.p, "pt_render"), scene_(cl, ds),
-      accum_(cl, CL_MEM_READ_WRITE, plan_.bytes("accumulator")),
-      ray_count_(cl, CL_MEM_READ_WRITE, plan_.bytes("ray counts")) {
-    accum_.fill_zero(cl);
-    ray_count_.fill_zero(cl);
+      stats_(cl, CL_MEM_READ_WRITE, plan_.bytes("stats")),
+      band_pixels_(
+          film_bands(pixels(), kPtFilmPixelBytes, max_alloc(cl, max_alloc_bytes)).band_pixels) {
+    for (std::uint64_t first = 0; first < pixels(); first += band_pixels_) {
+        bands_.emplace_back(cl, CL_MEM_READ_WRITE,
+                            std::min(band_pixels_, pixels() - first) * kPtFilmPixelBytes);
+        bands_.back().fill_zero(cl);
+    }
+    stats_.fill_zero(cl);
 }
 
 void PathTracer::add_samples(std::uint32_t n) {
     if (n == 0) return;
     cl_ulong seed = seed_;
-    cl_uint first = spp_, count = n;
-    kernel_.set_args(scene_.tris, scene_.nodes, scene_.mats, scene_.lights, ds_.frame, seed, first,
-                     count, accum_, ray_count_);
-    kernel_.run(cl_, pixels());
+    cl_uint first_sample = spp_, count = n;
+    for (std::size_t b = 0; b < bands_.size(); ++b) {
+        std::uint64_t first = b * band_pixels_, size = std::min(band_pixels_, pixels() - first);
+        kernel_.set_args(scene_.tris, scene_.nodes, scene_.mats, scene_.lights, ds_.frame, seed,
+                         first_sample, count, cl_uint(first), cl_uint(size), bands_[b], stats_);
+        kernel_.enqueue(cl_, size);
+    }
+    cl_.finish("kernel pt_render over " + std::to_string(pixels()) + " pixels");
     spp_ += n;
 }
 
@@ -40,13 +59,17 @@ std::string PathTracer::summary(double seconds) const {
     return buf;
 }
 
+std::uint64_t PathTracer::stat(int which) const {
+    std::vector<cl_ulong> rows(stats_.bytes() / sizeof(cl_ulong));
+    stats_.read(cl_, rows.data());
+    std::uint64_t sum = 0;
+    for (std::size_t r = 0; r + PT_STAT_COUNT <= rows.size(); r += PT_STAT_COUNT)
+        sum += rows[r + which];
+    return sum;
+}
+
 std::uint64_t PathTracer::nonfinite() const {
-    std::vector<float> acc(pixels() * 4);
-    accum_.read(cl_, acc.data());
-    std::uint64_t n = 0;
-    for (std::size_t p = 0; p < pixels(); ++p)
-        n += std::uint64_t(acc[4 * p + 3]);
-    return n;
+    return stat(PT_STAT_NONFINITE);
 }
 
 std::vector<std::string> PathTracer::notes() const {
@@ -57,22 +80,20 @@ std::vector<std::string> PathTracer::notes() const {
 }
 
 std::uint64_t PathTracer::rays() const {
-    std::vector<cl_ulong> counts(pixels());
-    ray_count_.read(cl_, counts.data());
-    std::uint64_t sum = 0;
-    for (cl_ulong c : counts)
-        sum += c;
-    return sum;
+    return stat(PT_STAT_RAYS);
 }
 
 Image PathTracer::image() const {
-    std::vector<float> acc(pixels() * 4);
-    accum_.read(cl_, acc.data());
     Image img(int(ds_.frame.width), int(ds_.frame.height));
     float inv = spp_ ? 1.0f / float(spp_) : 0.0f;
-    for (std::size_t p = 0; p < pixels(); ++p)
-        for (int c = 0; c < 3; ++c)
-            img.rgb[3 * p + c] = acc[4 * p + c] * inv;
+    std::vector<float> sums;
+    for (std::size_t b = 0; b < bands_.size(); ++b) {
+        sums.resize(bands_[b].bytes() / sizeof(float));
+        bands_[b].read(cl_, sums.data());
+        float* out = img.rgb.data() + 3 * b * band_pixels_;
+        for (std::size_t i = 0; i < sums.size(); ++i)
+            out[i] = sums[i] * inv;
+    }
     return img;
 }
 

@@ -10,6 +10,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <vector>
 
 namespace smallmlt {
 
@@ -23,8 +24,9 @@ std::vector<std::string> pt_program_files(PtSampler sampler);
 
 class PathTracer : public Integrator {
   public:
+    // The film's bands fit max_alloc_bytes (0: the device's largest allocation).
     PathTracer(const ClContext& cl, const DeviceScene& ds, std::uint64_t seed,
-               PtSampler sampler = PtSampler::Sobol);
+               PtSampler sampler = PtSampler::Sobol, std::uint64_t max_alloc_bytes = 0);
 
     void advance(std::uint32_t units) override { add_samples(units); }
     std::uint64_t units_for_spp(std::uint32_t spp) const override { return spp; }
@@ -51,7 +53,11 @@ class PathTracer : public Integrator {
     ClProgram program_;
     ClKernel kernel_;
     SceneBuffers scene_;
-    ClBuffer accum_, ray_count_;
+    std::vector<ClBuffer> bands_; // the film: sums of R, G, B per pixel
+    ClBuffer stats_;              // PT_STAT_COUNT per work-group
+    std::uint64_t band_pixels_;
+    // Sums of the rows of stats.
+    std::uint64_t stat(int which) const;
 };
 
 } // namespace smallmlt
