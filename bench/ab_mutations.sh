@@ -4,7 +4,10 @@
 # of the steps (the render summary's figure, which leaves out burn-in and
 # set-up) of each, their ratio B/A, and each binary's global atomics per
 # mutation where its summary gives them. Usage: bench/ab_mutations.sh BIN_A BIN_B
-# Settings (environment): SCENES, SIZE, SPP, THREADS, RUNS.
+# Settings (environment): SCENES, SIZE, SPP, THREADS, RUNS; FLAGS_A and
+# FLAGS_B are added to A's and B's command lines, so that one binary can be
+# run both ways (FLAGS_A="--film-atomics 64": the 64-bit film against the
+# 32-bit one).
 set -eu
 A=$1 B=$2
 SCENES=${SCENES:-cornell cornell-water}
@@ -12,6 +15,8 @@ SIZE=${SIZE:-128}
 SPP=${SPP:-64}
 THREADS=${THREADS:-65536}
 RUNS=${RUNS:-5}
+FLAGS_A=${FLAGS_A:-}
+FLAGS_B=${FLAGS_B:-}
 OUT=${RESULTS:-bench/results}/ab_mutations
 mkdir -p "$OUT"
 echo "scene,binary,run,mutations_per_s,atomics_per_mutation" > "$OUT/runs.csv"
@@ -19,8 +24,9 @@ for scene in $SCENES; do
     r=1
     while [ "$r" -le "$RUNS" ]; do
         for bin in A B; do
-            [ "$bin" = A ] && exe=$A || exe=$B
-            "$exe" render "scenes/$scene.scene" --method mlt --threads "$THREADS" --spp "$SPP" \
+            if [ "$bin" = A ]; then exe=$A flags=$FLAGS_A; else exe=$B flags=$FLAGS_B; fi
+            # shellcheck disable=SC2086 # the flags are words
+            "$exe" render "scenes/$scene.scene" --method mlt --threads "$THREADS" --spp "$SPP" $flags \
                 --width "$SIZE" --height "$SIZE" --seed "$r" --out "$OUT/last.pfm" |
                 awk -v s="$scene" -v b="$bin" -v r="$r" '/ mlt: / {
                     m = $0; sub(/ M mutations\/s.*/, "", m); sub(/.*, /, "", m)

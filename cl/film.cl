@@ -22,8 +22,8 @@ typedef struct {
     FilmShape shape;
 } Film;
 
-inline Film film_bind(__global FilmWord* band0, __global FilmWord* band1,
-                      __global FilmWord* band2, __global FilmWord* band3, FilmShape shape) {
+inline Film film_bind(__global FilmWord* band0, __global FilmWord* band1, __global FilmWord* band2,
+                      __global FilmWord* band3, FilmShape shape) {
     Film film = {band0, band1, band2, band3, shape};
     return film;
 }

@@ -69,9 +69,8 @@ __kernel void mlt_step(__global const Triangle* tris, __global const BvhNode* no
                        __global const Material* mats, __global const LightEntry* lights,
                        const Frame frame, __global uint* state, __global ChainValue* values,
                        const uint num_threads, const uint proposals, const ulong seed,
-                       const uint iteration, const uint large_threshold,
-                       __global FilmWord* film0, __global FilmWord* film1,
-                       __global FilmWord* film2, __global FilmWord* film3,
+                       const uint iteration, const uint large_threshold, __global FilmWord* film0,
+                       __global FilmWord* film1, __global FilmWord* film2, __global FilmWord* film3,
                        const FilmShape film_shape, __global ulong* stats, const uint stuck_run) {
     __local float l_a[MLT_GROUP];
     __local uint l_next[MLT_GROUP];
@@ -125,9 +124,8 @@ __kernel void mlt_step(__global const Triangle* tris, __global const BvhNode* no
 #define MLT_OWED_FLUSH 2u
 __kernel void mlt_owed(const Frame frame, __global const uint* state, __global ChainValue* values,
                        const uint num_chains, const ulong seed, const uint iteration,
-                       __global FilmWord* film0, __global FilmWord* film1,
-                       __global FilmWord* film2, __global FilmWord* film3,
-                       const FilmShape film_shape, const uint mode) {
+                       __global FilmWord* film0, __global FilmWord* film1, __global FilmWord* film2,
+                       __global FilmWord* film3, const FilmShape film_shape, const uint mode) {
     uint c = get_global_id(0);
     if (c >= num_chains) return;
     Film film = film_bind(film0, film1, film2, film3, film_shape);

@@ -10,8 +10,8 @@
 __kernel void pt_render(__global const Triangle* tris, __global const BvhNode* nodes,
                         __global const Material* mats, __global const LightEntry* lights,
                         const Frame frame, const ulong seed, const uint first_sample,
-                        const uint spp, const uint first, const uint count,
-                        __global float* accum, __global ulong* stats) {
+                        const uint spp, const uint first, const uint count, __global float* accum,
+                        __global ulong* stats) {
     __local uint l_rays, l_nonfinite;
     if (get_local_id(0) == 0u) l_rays = l_nonfinite = 0u;
     barrier(CLK_LOCAL_MEM_FENCE);
@@ -39,7 +39,8 @@ __kernel void pt_render(__global const Triangle* tris, __global const BvhNode* n
     }
     barrier(CLK_LOCAL_MEM_FENCE);
     if (get_local_id(0) != 0u) return;
-    __global ulong* row = stats + (size_t)(first / get_local_size(0) + get_group_id(0)) * PT_STAT_COUNT;
+    __global ulong* row =
+        stats + (size_t)(first / get_local_size(0) + get_group_id(0)) * PT_STAT_COUNT;
     row[PT_STAT_RAYS] += l_rays;
     row[PT_STAT_NONFINITE] += l_nonfinite;
 }

@@ -64,8 +64,21 @@ check budget_table 0 "B/chain pack" -- "$BIN" budget scenes/cornell-water.scene 
 check budget_csv 0 "depth,bits_per_bounce,chain_bytes_packed" -- "$BIN" budget scenes/cornell.scene --format csv --threads 1024
 check budget_json 0 "\"reduction\":" -- "$BIN" budget scenes/cornell.scene --format json --threads 1024 --proposals 4
 check budget_proposals 2 "--proposals: 3 is not a power of two" -- "$BIN" budget scenes/cornell.scene --proposals 3
-check budget_small 0 "(--device-mem)" -- "$BIN" budget scenes/cornell-water.scene --device-mem 64M
-check budget_too_small 1 "it would take 24.0 MiB of device memory" -- "$BIN" budget scenes/cornell-water.scene --device-mem 16M
+check budget_small 0 "(emulated)" -- "$BIN" budget scenes/cornell-water.scene --device-mem 64M
+check budget_too_small 1 "it would take 6.4 MiB of device memory" -- "$BIN" budget scenes/cornell-water.scene --device-mem 4M
+check budget_film 0 "film 512x512: 3.0 MiB in 1 band(s)" -- "$BIN" budget scenes/cornell-water.scene --device-mem 16M
+check budget_uhd 0 "film 3840x2160: 94.9 MiB in 2 band(s)" -- "$BIN" budget scenes/cornell.scene --width 3840 --height 2160 --device-mem 256M --depth 1
+check budget_profile 0 "adreno-650 (emulated on" -- "$BIN" budget scenes/cornell-water.scene --profile adreno-650 --depth 1
+check profile_bad 2 "--profile: 'mali' is not a device profile (mali-g610, adreno-650" -- "$BIN" render scenes/cornell.scene --profile mali
+check profile_vc4 1 "runs work-groups of at most 12 work-items" -- "$BIN" render scenes/cornell.scene --profile videocore-iv --out "$DIR/vc4.png"
+absent profile_vc4_no_file "$DIR/vc4.png"
+check film_atomics_bad 2 "--film-atomics: '16' is not 32 or 64" -- "$BIN" render scenes/cornell.scene --film-atomics 16
+check film64_needs_int64 1 "leave out --film-atomics 64" -- "$BIN" render scenes/cornell.scene --profile adreno-650 --film-atomics 64 --width 8 --height 8 --out "$DIR/f64.png"
+absent film64_needs_int64_no_file "$DIR/f64.png"
+# The film's targets on small devices: cornell-water at its own 512x512 film
+# and depth 24 on 16 MiB (largest allocation 4 MiB), by MLT and by PT.
+check water_16m_mlt 0 "film 3.0 MiB in 1 band(s); device memory 6.9 MiB of 8.0 MiB allowed" -- "$BIN" render scenes/cornell-water.scene --device-mem 16M --spp 1 --out "$DIR/w16.pfm"
+check water_16m_pt 0 "film: 3.0 MiB in 1 band(s)" -- "$BIN" render scenes/cornell-water.scene --method pt --device-mem 16M --spp 1 --out "$DIR/w16p.pfm"
 check proposals_ok 0 "x 4 proposals" -- "$BIN" render scenes/cornell.scene --width 8 --height 8 --spp 4 --threads 256 --proposals 4 --out "$DIR/k4.pfm"
 check proposals_pow2 2 "--proposals: 3 is not a power of two" -- "$BIN" render scenes/cornell.scene --proposals 3
 check proposals_multiple 2 "--threads 100 is not a multiple of --proposals 8" -- "$BIN" render scenes/cornell.scene --threads 100 --proposals 8 --out "$DIR/k8.png"
@@ -73,6 +86,13 @@ absent proposals_multiple_no_file "$DIR/k8.png"
 if "$BIN" devices | head -n 1 | grep -q "Portable Computing Language"; then
     # PoCL shrinks the memory it reports; the budget must follow it.
     check pocl_memory_limit 0 "device memory 1.0 GiB" -- env POCL_MEMORY_LIMIT=1 "$BIN" budget scenes/cornell.scene --depth 1
+    # A 3840x2160 film on a device of 1 GiB, emulating 256 MiB (largest
+    # allocation 64 MiB): the film goes in two bands, by PT and by MLT.
+    check uhd_pt 0 "film: 94.9 MiB in 2 band(s)" -- env POCL_MEMORY_LIMIT=1 "$BIN" render scenes/cornell.scene --width 3840 --height 2160 --depth 1 --device-mem 256M --method pt --spp 1 --out "$DIR/uhd.pfm"
+    check uhd_pt_image 0 "mean" -- "$BIN" compare "$DIR/uhd.pfm" "$DIR/uhd.pfm"
+    check uhd_mlt 0 "film 94.9 MiB in 2 band(s)" -- env POCL_MEMORY_LIMIT=1 "$BIN" render scenes/cornell.scene --width 3840 --height 2160 --depth 1 --device-mem 256M --spp 1 --burn-in-iters 1 --out "$DIR/uhdm.pfm"
+    check uhd_mlt_image 0 "mean" -- "$BIN" compare "$DIR/uhdm.pfm" "$DIR/uhd.pfm"
+    rm -f "$DIR/uhd.pfm" "$DIR/uhdm.pfm"
     # A platform without devices.
     check no_device 1 "no OpenCL device found on any platform" -- env POCL_DEVICES=none "$BIN" render scenes/cornell.scene --out "$DIR/nd.png"
     absent no_device_no_file "$DIR/nd.png"
@@ -90,7 +110,7 @@ check stuck_run_zero 2 "--stuck-run: 0 is out of range" -- "$BIN" render scenes/
 check stuck_note 0 "stayed on one path for 100 steps or more" -- "$BIN" render scenes/tiny-caustic.scene --width 16 --height 16 --threads 1024 --spp 2400 --stuck-run 100 --out "$DIR/stuck.pfm"
 check stuck_summary 0 "longest run of rejections" -- "$BIN" render scenes/cornell.scene --width 8 --height 8 --spp 4 --threads 64 --out "$DIR/stuck2.pfm"
 check render_quiet 0 "" -- "$BIN" render scenes/cornell.scene --width 8 --height 8 --spp 1 --quiet --out "$DIR/q.exr"
-for f in ok.png ok.pfm q.exr mlt.pfm default.png dark.pfm; do
+for f in ok.png ok.pfm q.exr mlt.pfm default.png dark.pfm w16.pfm w16p.pfm; do
     if [ -s "$DIR/$f" ]; then pass=$((pass + 1)); echo "ok   wrote $f"; else fail=$((fail + 1)); echo "FAIL $f missing"; fi
 done
 "$BIN" render scenes/cornell.scene --method pt --width 4 --height 4 --spp 1 --quiet --out "$DIR/small.pfm"

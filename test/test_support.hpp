@@ -10,6 +10,7 @@
 #include "scene/scene.hpp"
 
 #include <array>
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <string>
@@ -93,6 +94,23 @@ inline std::vector<cl_float4> lazy_eager_committed(const MltRenderer& mlt, const
     std::vector<cl_float4> f(std::size_t(chains) * 3);
     out.read(cl(), f.data());
     return f;
+}
+
+// How far an MLT image's mean luminance may stray from b by the film's
+// rounding alone (b cancels from it): 1e-6 for the 2^-24 rounding of
+// weights, plus 5 standard deviations of the film's stochastic rounding:
+// each added word errs by at most a quarter unit squared in variance,
+// units of 2^-F, weighted at most 0.7152 (green's share) in luminance,
+// over about 3 words per step for each flush or read, beside the steps'
+// atomics; relative to the image's total weight, the mutations.
+inline double film_mean_tolerance(const MltRenderer& m) {
+    MltStats s = m.stats();
+    if (s.mutations == 0) return 0;
+    const MltFilmPlan& p = m.film().plan();
+    double drains = p.steps_per_drain ? double(m.iterations() / p.steps_per_drain) : 0.0;
+    double words = double(s.atomics) + 3.0 * m.chains() * (drains + 2);
+    double sd = 0.7152 * 0.5 * std::sqrt(words) / double(p.shape.scale) / double(s.mutations);
+    return 1e-6 + 5 * sd;
 }
 
 // A scratch directory under build/, emptied per call site.

@@ -88,14 +88,13 @@ void print_film(const DeviceScene& ds, const ChainShape& shape, const DeviceInfo
     std::uint64_t mlt_min = smallest_device_memory([&](std::uint64_t max_alloc) {
         return plan_mlt(ds, least, scan_work_group(dev), max_alloc);
     });
-    std::uint64_t pt_min = smallest_device_memory(
-        [&](std::uint64_t max_alloc) { return plan_pt(ds, max_alloc); });
+    std::uint64_t pt_min =
+        smallest_device_memory([&](std::uint64_t max_alloc) { return plan_pt(ds, max_alloc); });
     std::printf("film %ux%u: %s in %u band(s), %.1f%% of the MLT render's %s; the least "
                 "device memory that renders it: %s by MLT (%u threads), %s by PT\n",
-                ds.frame.width, ds.frame.height, format_bytes(mlt.film()).c_str(),
-                mlt.film_bands(), 100.0 * double(mlt.film()) / double(mlt.total()),
-                format_bytes(mlt.total()).c_str(), format_bytes(mlt_min).c_str(), kMinThreads,
-                format_bytes(pt_min).c_str());
+                ds.frame.width, ds.frame.height, format_bytes(mlt.film()).c_str(), mlt.film_bands(),
+                100.0 * double(mlt.film()) / double(mlt.total()), format_bytes(mlt.total()).c_str(),
+                format_bytes(mlt_min).c_str(), kMinThreads, format_bytes(pt_min).c_str());
 }
 
 } // namespace

@@ -45,15 +45,15 @@ std::uint32_t fit_to_device(const RenderOptions& o, const ClContext& cl, const D
     if (o.method == Method::Pt) {
         MemoryPlan plan = plan_pt(ds, budget.max_alloc_bytes);
         if (!plan_fits(plan, budget))
-            throw InputError(
-                "not enough device memory: a " + std::to_string(ds.frame.width) + "x" +
-                std::to_string(ds.frame.height) + " path-traced film needs " +
-                format_bytes(plan.total()) + " (largest buffer " + format_bytes(plan.largest()) +
-                "); the device allows " + allowed + " (max allocation " +
-                format_bytes(budget.max_alloc_bytes) + "); it would take " +
-                format_bytes(smallest_device_memory(
-                    [&](std::uint64_t max_alloc) { return plan_pt(ds, max_alloc); })) +
-                " of device memory");
+            throw InputError("not enough device memory: a " + std::to_string(ds.frame.width) + "x" +
+                             std::to_string(ds.frame.height) + " path-traced film needs " +
+                             format_bytes(plan.total()) + " (largest buffer " +
+                             format_bytes(plan.largest()) + "); the device allows " + allowed +
+                             " (max allocation " + format_bytes(budget.max_alloc_bytes) +
+                             "); it would take " +
+                             format_bytes(smallest_device_memory(
+                                 [&](std::uint64_t max_alloc) { return plan_pt(ds, max_alloc); })) +
+                             " of device memory");
         if (!o.quiet)
             std::printf("film: %s in %u band(s); device memory %s of %s allowed\n",
                         format_bytes(plan.film()).c_str(), plan.film_bands(),

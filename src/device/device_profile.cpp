@@ -14,8 +14,8 @@ const std::vector<DeviceProfile>& device_profiles() {
          "posts/running-llama3-on-the-gpu-of-a-rk1-turing-pi.rst"},
         {"adreno-650", "QUALCOMM Adreno(TM) 650", 3992293376ull, 998073344ull, 32768, 3, 1024,
          false, "github.com/xmrig/xmrig/issues/2383"},
-        {"apple-m1", "Apple M1 (macOS 13.5.2)", 11453251584ull, 2147483648ull, 32768, 8, 256,
-         false, "github.com/pynufft/pynufft, doc/source/installation/Macbook.rst"},
+        {"apple-m1", "Apple M1 (macOS 13.5.2)", 11453251584ull, 2147483648ull, 32768, 8, 256, false,
+         "github.com/pynufft/pynufft, doc/source/installation/Macbook.rst"},
         {"videocore-iv", "VideoCore IV GPU (VC4CL 0.4, Raspberry Pi 3B+)", 268435456ull,
          268435456ull, 268435456ull, 1, 12, false,
          "github.com/linzhanyu/linzhanyu.github.io, _posts/2019-09-23-OpenCL-rspi3.md"},
@@ -38,8 +38,8 @@ DeviceInfo emulate_profile(const DeviceInfo& real, const DeviceProfile& p) {
     d.global_mem_bytes = std::min(real.global_mem_bytes, p.global_mem_bytes);
     d.max_alloc_bytes = std::min(real.max_alloc_bytes, p.max_alloc_bytes);
     d.local_mem_bytes = std::min(real.local_mem_bytes, p.local_mem_bytes);
-    d.compute_units = std::min(real.compute_units, p.compute_units);
-    d.max_work_group = std::min(real.max_work_group, p.max_work_group);
+    d.compute_units = p.compute_units; // these size the thread count only
+    d.max_work_group = p.max_work_group;
     d.int64_atomics = real.int64_atomics && p.int64_atomics;
     d.emulated = true;
     return d;

@@ -26,8 +26,10 @@ const std::vector<DeviceProfile>& device_profiles();
 // Throws UsageError naming --profile and the known names.
 const DeviceProfile& find_device_profile(const std::string& name);
 
-// `real` limited to the profile: each figure the smaller of the two, 64-bit
-// atomics only where both have them; the name says what it emulates.
+// `real` as the profile: its memory, largest allocation and local memory
+// (each never more than real's), 64-bit atomics only where both have them,
+// and the profile's compute units and work-group size, which size the
+// thread count; the name says what it emulates.
 DeviceInfo emulate_profile(const DeviceInfo& real, const DeviceProfile& p);
 
 // `real` limited to `bytes` of memory with a largest allocation of a quarter

@@ -101,7 +101,8 @@ FilmBands film_bands(std::uint64_t pixels, std::uint64_t bytes_per_pixel, std::u
     FilmBands b;
     std::uint64_t whole = (pixels + kDefaultWorkGroup - 1) / kDefaultWorkGroup * kDefaultWorkGroup;
     b.band_pixels = std::min(fit, std::max<std::uint64_t>(whole, kDefaultWorkGroup));
-    b.bands = std::uint32_t(std::max<std::uint64_t>(1, (pixels + b.band_pixels - 1) / b.band_pixels));
+    b.bands =
+        std::uint32_t(std::max<std::uint64_t>(1, (pixels + b.band_pixels - 1) / b.band_pixels));
     return b;
 }
 
@@ -216,8 +217,7 @@ MemoryPlan plan_for(const DeviceScene& ds, ChainShape shape, std::uint32_t threa
                      format_bytes(smallest.largest()) + "); the device allows " +
                      format_bytes(std::uint64_t(kMemoryFraction * double(budget.global_bytes))) +
                      " (max allocation " + format_bytes(budget.max_alloc_bytes) +
-                     "); it would take " + format_bytes(needed) +
-                     " of device memory");
+                     "); it would take " + format_bytes(needed) + " of device memory");
 }
 
 } // namespace

@@ -210,10 +210,10 @@ namespace {
 // are the atomic_* functions of OpenCL 1.1.
 std::string forbid_int64_atomics() {
     std::string d;
-    for (const char* f : {"atom_add", "atom_sub", "atom_xchg", "atom_inc", "atom_dec",
-                          "atom_cmpxchg", "atom_min", "atom_max", "atom_and", "atom_or",
-                          "atom_xor"})
-        d += std::string("#define ") + f + "(...) " + f +
+    for (const char* f :
+         {"atom_add", "atom_sub", "atom_xchg", "atom_inc", "atom_dec", "atom_cmpxchg", "atom_min",
+          "atom_max", "atom_and", "atom_or", "atom_xor"})
+        d += std::string("#undef ") + f + "\n#define " + f + "(...) " + f +
              "_needs_cl_khr_int64_base_atomics_which_this_device_lacks\n";
     return d;
 }

@@ -110,10 +110,10 @@ void mlt_require_device(const DeviceInfo& d, const MltOptions& opt) {
 
 std::vector<std::string> mlt_program_files(const MltOptions& opt) {
     std::vector<std::string> files = {
-        "cl/shared_types.h",  "cl/rng.cl",         "cl/layout.cl",   "cl/pss.cl",
-        "cl/sample_chain.cl", "cl/geometry.cl",    "cl/bvh.cl",      "cl/bsdf.cl",
-        "cl/light.cl",        "cl/path.cl",        "cl/camera.cl",   "cl/eval_result.cl",
-        opt.evaluator,        "cl/chain_value.cl", "cl/film.cl",    "cl/mlt_step.cl",
+        "cl/shared_types.h",  "cl/rng.cl",         "cl/layout.cl", "cl/pss.cl",
+        "cl/sample_chain.cl", "cl/geometry.cl",    "cl/bvh.cl",    "cl/bsdf.cl",
+        "cl/light.cl",        "cl/path.cl",        "cl/camera.cl", "cl/eval_result.cl",
+        opt.evaluator,        "cl/chain_value.cl", "cl/film.cl",   "cl/mlt_step.cl",
         "cl/kernels_mlt.cl",  "cl/scan.cl",        "cl/burnin.cl"};
     files.insert(files.end(), opt.extra_files.begin(), opt.extra_files.end());
     return files;
@@ -208,8 +208,8 @@ void MltRenderer::init_chains() {
 void MltRenderer::owed(std::uint32_t mode) const {
     k_owed_.set_args(ds_.frame, state_, values_, cl_uint(chains()),
                      cl_ulong(derive_seed(opt_.seed, kPurposeStep)), cl_uint(iterations_),
-                     film_.band(0), film_.band(1), film_.band(2), film_.band(3),
-                     film_.plan().shape, cl_uint(mode));
+                     film_.band(0), film_.band(1), film_.band(2), film_.band(3), film_.plan().shape,
+                     cl_uint(mode));
     k_owed_.enqueue(cl_, chains());
 }
 
@@ -330,8 +330,7 @@ Image MltRenderer::image() const {
     Image img(int(ds_.frame.width), int(ds_.frame.height));
     double mutations = double(iterations_) * opt_.threads;
     if (mutations == 0) return img;
-    double scale =
-        b() * double(pixels()) / mutations / double(film_.plan().shape.scale);
+    double scale = b() * double(pixels()) / mutations / double(film_.plan().shape.scale);
     for (std::size_t i = 0; i < acc.size(); ++i)
         img.rgb[i] = float(double(acc[i]) * scale);
     return img;

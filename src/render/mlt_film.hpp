@@ -45,8 +45,7 @@ double film_pass_bound(std::uint32_t threads, std::uint32_t steps, std::uint32_t
 // atomics64, one 64-bit band of FILM64_FRAC_BITS drained never. Throws
 // InputError if the bands exceed FILM_MAX_BANDS or not even F = 1 fits.
 MltFilmPlan plan_mlt_film(std::uint64_t pixels, std::uint32_t threads, std::uint64_t max_alloc,
-                          bool atomics64,
-                          std::uint64_t pass_mutations = kFilmPassMutations);
+                          bool atomics64, std::uint64_t pass_mutations = kFilmPassMutations);
 
 class MltFilm {
   public:

@@ -22,8 +22,7 @@ std::uint64_t max_alloc(const ClContext& cl, std::uint64_t given) {
 
 PathTracer::PathTracer(const ClContext& cl, const DeviceScene& ds, std::uint64_t seed,
                        PtSampler sampler, std::uint64_t max_alloc_bytes)
-    : cl_(cl), ds_(ds), seed_(seed),
-      plan_(plan_pt(ds, max_alloc(cl, max_alloc_bytes))),
+    : cl_(cl), ds_(ds), seed_(seed), plan_(plan_pt(ds, max_alloc(cl, max_alloc_bytes))),
       program_(cl.build(pt_program_files(sampler), ds.layout.defines())),
       kernel_(program_.p, "pt_render"), scene_(cl, ds),
       stats_(cl, CL_MEM_READ_WRITE, plan_.bytes("stats")),
