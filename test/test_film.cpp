@@ -17,10 +17,10 @@ using namespace smallmlt;
 
 namespace {
 
-// The furnace with emission `ke` on every face: every path's F is a
-// multiple of ke (the walls are grey), so every splat has ke's colour.
+// The furnace (depth 1) with emission `ke` on every face: every path's F is
+// a multiple of ke (the walls are grey), so every splat has ke's colour.
 DeviceScene coloured_furnace(int film, float r, float g, float b) {
-    DeviceScene ds = prepare_scene(test::scene("furnace", film, film, 4));
+    DeviceScene ds = prepare_scene(test::scene("furnace", film, film, 1));
     for (Material& m : ds.materials) {
         m.ke[0] = r;
         m.ke[1] = g;
@@ -117,7 +117,7 @@ TEST(FilmRounding, DimChannelsAreNotBiased) {
         opt.film_atomics64 = atomics64;
         MltRenderer mlt(test::cl(), ds, opt);
         mlt.prepare();
-        mlt.step(120);
+        mlt.step(atomics64 ? 20 : 120);
         std::array<double, 3> s = channel_sums(mlt.image());
         double ratio = s[0] / s[2] / red;
         std::printf("%s film: red / blue = %.5f of the light's\n", atomics64 ? "64-bit" : "32-bit",
