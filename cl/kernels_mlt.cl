@@ -12,18 +12,16 @@ __kernel void mlt_luminance(__global const Triangle* tris, __global const BvhNod
                             const uint first, const uint count, __global float* lum,
                             __global ulong* stats) {
     __local uint l_count[MLT_COUNTS];
+    uint i = get_global_id(0), nonfinite = 0u;
     mlt_zero_counts(l_count);
     barrier(CLK_LOCAL_MEM_FENCE);
-    uint i = get_global_id(0), nonfinite = 0u;
     if (i < count) {
         SceneView sc = path_scene(tris, nodes, mats, lights, &frame);
         SampleSource src = smp_chain(state, 0u, 1u, rng_key(seed, first + i, 0u), SMP_LARGE, 0u);
         EvalResult s = mlt_checked(eval_state(&sc, &frame, &src), &nonfinite);
         lum[i] = path_luminance(s.f);
-        if (nonfinite) atomic_inc(&l_count[MLT_COUNT_NONFINITE]);
     }
-    barrier(CLK_LOCAL_MEM_FENCE);
-    mlt_publish(stats, l_count, 0ul);
+    mlt_publish_nonfinite(stats, l_count, nonfinite);
 }
 
 /* Starts chain c at the OMC path of sample picks[c] = (round r, index i):
@@ -35,9 +33,9 @@ __kernel void mlt_init(__global const Triangle* tris, __global const BvhNode* no
                        const uint num_chains, const ulong omc_seed, __global const uint2* picks,
                        __global ulong* stats) {
     __local uint l_count[MLT_COUNTS];
+    uint c = get_global_id(0), nonfinite = 0u;
     mlt_zero_counts(l_count);
     barrier(CLK_LOCAL_MEM_FENCE);
-    uint c = get_global_id(0), nonfinite = 0u;
     if (c < num_chains) {
         SceneView sc = path_scene(tris, nodes, mats, lights, &frame);
         uint2 pick = picks[c];
@@ -47,10 +45,8 @@ __kernel void mlt_init(__global const Triangle* tris, __global const BvhNode* no
         EvalResult s = mlt_checked(eval_state(&sc, &frame, &src), &nonfinite);
         smp_commit(&src, s.bounces);
         values[c] = chain_started(s.f, s.bounces);
-        if (nonfinite) atomic_inc(&l_count[MLT_COUNT_NONFINITE]);
     }
-    barrier(CLK_LOCAL_MEM_FENCE);
-    mlt_publish(stats, l_count, 0ul);
+    mlt_publish_nonfinite(stats, l_count, nonfinite);
 }
 
 /* One Metropolis step of every chain with K proposals each (split-transition

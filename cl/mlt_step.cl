@@ -174,6 +174,14 @@ inline ulong mlt_b_sample(float lum) {
     return (ulong)(fmin(lum, MLT_B_MAX_SAMPLE) * (float)(1u << MLT_B_FRAC_BITS) + 0.5f);
 }
 
+/* For kernels that count only dropped samples: the work-item's `nonfinite`
+ * joins the group's count, which goes to the group's row of stats. */
+inline void mlt_publish_nonfinite(__global ulong* stats, __local uint* count, uint nonfinite) {
+    if (nonfinite) atomic_add(&count[MLT_COUNT_NONFINITE], nonfinite);
+    barrier(CLK_LOCAL_MEM_FENCE);
+    mlt_publish(stats, count, 0ul);
+}
+
 /* A work-item's share of the group's counters: rays, large steps,
  * non-finite results, global atomics; and in large_lum[lid] its large
  * step's luminance (0 if small), which the group sums in a fixed order. */
