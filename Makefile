@@ -11,10 +11,11 @@ LDLIBS   := -lOpenCL -ltinyobjloader -ltinyexr -lstb -lpthread
 ifeq ($(SAN),1)
 CXXFLAGS += -O1 -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=undefined
 LDFLAGS  += -fsanitize=address,undefined
+export LSAN_OPTIONS := suppressions=$(CURDIR)/test/lsan.supp print_suppressions=0
 endif
 
 DEB_PACKAGES := g++ make pocl-opencl-icd ocl-icd-opencl-dev opencl-headers libstb-dev gnuplot-nox \
-                libtinyobjloader-dev libtinyexr-dev libgtest-dev
+                libtinyobjloader-dev libtinyexr-dev libgtest-dev libopenmpi-dev openmpi-bin
 
 # `make fuzz` only: libFuzzer comes with clang's runtime libraries.
 FUZZ_PACKAGES := clang libclang-rt-dev
@@ -23,16 +24,21 @@ FUZZ_SRC      := $(addprefix src/scene/,scene.cpp obj_loader.cpp mtl_loader.cpp 
                    bvh.cpp device_scene.cpp sample_layout.cpp)
 
 CL_FILES   := $(sort $(wildcard cl/*.h cl/*.cl))
-LIB_SRC    := $(filter-out src/app/main.cpp,$(wildcard src/*/*.cpp))
+LIB_SRC    := $(filter-out src/app/main.cpp src/mpi/%,$(wildcard src/*/*.cpp))
+MPI_SRC    := $(wildcard src/mpi/*.cpp)
+MPI_OBJ    := $(MPI_SRC:src/%.cpp=$(BUILD)/obj/%.o)
 LIB_OBJ    := $(LIB_SRC:src/%.cpp=$(BUILD)/obj/%.o) $(BUILD)/obj/gen/kernel_sources.o
 TEST_SRC   := $(wildcard test/*.cpp)
 TEST_OBJ   := $(TEST_SRC:test/%.cpp=$(BUILD)/obj/test/%.o)
 BIN        := $(BUILD)/smallmlt
 TEST_BIN   := $(BUILD)/smallmlt_tests
+# smallmlt-mpi, the same renderer over MPI ranks, when Open MPI is installed.
+MPICXX     := $(shell command -v mpicxx 2>/dev/null)
+MPI_BIN    := $(if $(MPICXX),$(BUILD)/smallmlt-mpi)
 
 .PHONY: all deps deps-fuzz run test bench bench-quick mutants fuzz format clean
 
-all: $(BIN)
+all: $(BIN) $(MPI_BIN)
 
 deps deps-fuzz: PACKAGES = $(if $(filter deps-fuzz,$@),$(FUZZ_PACKAGES),$(DEB_PACKAGES))
 deps deps-fuzz:
@@ -66,6 +72,13 @@ $(BUILD)/libsmallmlt.a: $(LIB_OBJ)
 $(BIN): $(BUILD)/obj/app/main.o $(BUILD)/libsmallmlt.a
 	$(CXX) $(LDFLAGS) $^ -o $@ $(LDLIBS)
 
+$(BUILD)/obj/mpi/%.o: src/mpi/%.cpp
+	@mkdir -p $(dir $@)
+	OMPI_CXX=$(CXX) $(MPICXX) $(CXXFLAGS) -DOMPI_SKIP_MPICXX -c $< -o $@
+
+$(BUILD)/smallmlt-mpi: $(MPI_OBJ) $(BUILD)/libsmallmlt.a
+	OMPI_CXX=$(CXX) $(MPICXX) $(LDFLAGS) $^ -o $@ $(LDLIBS)
+
 $(TEST_BIN): $(TEST_OBJ) $(BUILD)/libsmallmlt.a
 	$(CXX) $(LDFLAGS) $^ -o $@ -lgtest -lgtest_main $(LDLIBS)
 
@@ -75,7 +88,7 @@ run: deps
 	$(BIN) render scenes/cornell-water.scene --out out/cornell-water.png
 
 test: deps
-	$(MAKE) -j$(JOBS) $(BIN) $(TEST_BIN)
+	$(MAKE) -j$(JOBS) $(BIN) $(TEST_BIN) $(MPI_BIN)
 	SMALLMLT_BIN=$(BIN) sh test/run_all.sh $(TEST_BIN)
 
 bench: deps

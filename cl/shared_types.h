@@ -142,11 +142,12 @@ typedef struct {
 #define PT_STAT_NONFINITE 1
 #define PT_STAT_COUNT 2
 
-/* Fraction bits of the large steps' luminance sum: exact, order-free sums,
- * so b and the image stay repeatable for a seed. One sample adds at most
- * MLT_B_MAX_SAMPLE (larger luminances are clamped: 2^40, far above any
- * scene's). */
+/* Fraction bits of the luminance sums that make b (burn-in and large
+ * steps): exact, order-free sums, so b and the image stay repeatable for a
+ * seed and add up exactly over ranks. One sample adds at most
+ * MLT_B_MAX_SAMPLE (larger luminances are clamped: 2^32, far above any
+ * scene's; 2^56 in fixed point, so sums have room). */
 #define MLT_B_FRAC_BITS 24
-#define MLT_B_MAX_SAMPLE 1099511627776.0f
+#define MLT_B_MAX_SAMPLE 4294967296.0f
 
 #endif

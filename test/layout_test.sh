@@ -13,6 +13,7 @@ allowed() {
     device) echo "base scene" ;;
     render) echo "base image scene device" ;;
     app) echo "base image scene device render" ;;
+    mpi) echo "base image scene device render app" ;;
     *) echo "UNKNOWN" ;;
     esac
 }

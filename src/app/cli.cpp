@@ -271,6 +271,7 @@ RenderOptions parse_render(ArgReader& r) {
             o.depth = int(to_int(flag, r.value(flag, arg), 0, kMaxDepth));
         } else if (flag == "--device") {
             o.device = int(to_int(flag, r.value(flag, arg), 0, 1 << 20));
+            o.device_given = true;
         } else if (flag == "--rr-start") {
             o.roulette.start = int(to_int(flag, r.value(flag, arg), 0, kMaxDepth));
         } else if (flag == "--rr-threshold") {

@@ -40,6 +40,7 @@ struct RenderOptions {
     Roulette roulette;                    // --rr-*: every method
     PtSampler sampler = PtSampler::Sobol; // --sampler: path tracing
     int device = 0;
+    bool device_given = false; // else: device 0, or under MPI the local rank's
     bool quiet = false;
 };
 

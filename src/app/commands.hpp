@@ -2,12 +2,22 @@
 // Each returns the process's exit status or throws (base/error.hpp).
 #pragma once
 #include "app/cli.hpp"
+#include "device/ocl.hpp"
+#include "render/integrator.hpp"
+#include "render/ranks.hpp"
+#include "scene/device_scene.hpp"
 
+#include <memory>
 #include <string>
 
 namespace smallmlt {
 
-int run_render(const RenderOptions& o);   // render_command.cpp
+// render_command.cpp: `ranks` render one image together (one in smallmlt).
+int run_render(const RenderOptions& o, RankGroup& ranks);
+// The method rank ranks.rank() of ranks.size() runs for `o` on `cl`, sized
+// to the device (what run_render runs; tests rebuild a job's ranks with it).
+std::unique_ptr<Integrator> make_integrator(const RenderOptions& o, const ClContext& cl,
+                                            const DeviceScene& ds, const RankGroup& ranks);
 int run_budget(const BudgetOptions& o);   // budget_command.cpp
 int run_compare(const std::string& image, // compare_command.cpp
                 const std::string& reference);

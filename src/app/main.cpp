@@ -28,8 +28,10 @@ int main(int argc, char** argv) {
             return run_compare(c.image, c.reference);
         case CommandKind::Devices:
             return run_devices();
-        case CommandKind::Render:
-            return run_render(c.render);
+        case CommandKind::Render: {
+            SingleRank one;
+            return run_render(c.render, one);
+        }
         }
     } catch (const UsageError& e) {
         std::fprintf(stderr, "smallmlt: %s\n", e.what());

@@ -4,6 +4,7 @@
 #include "base/error.hpp"
 #include "base/rng.hpp"
 #include "device/scan.hpp"
+#include "render/ranks.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -47,6 +48,11 @@ std::uint64_t max_alloc(const ClContext& cl, const MltOptions& opt) {
 
 // Modes of the mlt_owed kernel (cl/kernels_mlt.cl).
 constexpr cl_uint kOwedAdd = 0, kOwedUndo = 1, kOwedFlush = 2;
+
+// A luminance sum in MLT_B_FRAC_BITS fixed point, as a number.
+double fixed_lum(std::uint64_t v) {
+    return double(v) / double(1u << MLT_B_FRAC_BITS);
+}
 
 // The kernels' rng_key (cl/rng.cl).
 std::uint64_t rng_key(std::uint64_t seed, std::uint32_t a, std::uint32_t b) {
@@ -144,7 +150,8 @@ void MltRenderer::sample_starts() {
     ClBuffer scan(cl_, CL_MEM_READ_WRITE, plan_.bytes("scan"));
     BurnInPicker picker(cl_, program_.p, m);
     std::vector<float> host(m);
-    double sum = 0, sum2 = 0;
+    std::uint64_t sum = 0;
+    double sum2 = 0;
     cl_ulong omc_seed = derive_seed(opt_.seed, kPurposeOmc);
     cl_ulong pick_seed = derive_seed(opt_.seed, kPurposePick);
     for (std::uint32_t it = 0; it < iters; ++it) {
@@ -154,7 +161,7 @@ void MltRenderer::sample_starts() {
         k_lum_.run(cl_, m);
         lum.read(cl_, host.data());
         for (float y : host) {
-            sum += y;
+            sum += b_sample_fixed(y);
             sum2 += double(y) * y;
         }
         if (opt_.burn_in) picker.add_round(lum, host, m, scan, pick_seed, chains, picks_);
@@ -166,17 +173,27 @@ void MltRenderer::sample_starts() {
             fresh[c] = cl_uint2{{iters, c}};
         picks_.write(cl_, fresh.data());
     }
-    double n = double(m) * iters, mean = sum / n;
-    burn_in_sum_ = sum;
+    double n = double(m) * iters, mean = fixed_lum(sum) / n;
+    burn_in_fixed_ = sum;
+    burn_in_sum2_ = sum2;
     burn_in_samples_ = std::uint64_t(m) * iters;
     burn_in_variance_ = n > 1 ? std::max(0.0, (sum2 / n - mean * mean) * n / (n - 1)) : 0;
 }
 
+std::uint64_t b_sample_fixed(float lum) {
+    if (!(lum > 0)) return 0;
+    return std::uint64_t(
+        std::min(double(lum), double(MLT_B_MAX_SAMPLE)) * double(1u << MLT_B_FRAC_BITS) + 0.5);
+}
+
+double mlt_b(std::uint64_t lum_fixed, std::uint64_t samples) {
+    return samples ? fixed_lum(lum_fixed) / double(samples) : 0;
+}
+
 MltRenderer::BEstimate MltRenderer::b_estimate(const MltStats& s) const {
     double n = double(burn_in_samples_) + double(s.large);
-    double sum = burn_in_sum_ + double(s.large_lum) / double(1u << MLT_B_FRAC_BITS);
     BEstimate e;
-    e.b = n > 0 ? sum / n : 0;
+    e.b = mlt_b(burn_in_fixed_ + s.large_lum, burn_in_samples_ + s.large);
     e.rel_error = e.b > 0 ? std::sqrt(burn_in_variance_ / n) / e.b : 0;
     return e;
 }
@@ -269,7 +286,7 @@ std::vector<std::string> MltRenderer::notes() const {
         out.push_back(
             std::to_string(n) +
             " samples had a NaN or infinite radiance and were dropped (counted as black)");
-    if (prepared_ && burn_in_sum_ == 0)
+    if (prepared_ && burn_in_fixed_ == 0)
         out.push_back("no OMC sample of " +
                       std::to_string(std::uint64_t(opt_.threads) * opt_.burn_in_iters) +
                       " carried light (b = 0): the image is black; is the scene lit?");
@@ -292,7 +309,7 @@ std::vector<std::string> MltRenderer::notes() const {
                       100.0 * double(s.stuck) / chains(), opt_.stuck_run, s.longest_run);
         out.push_back(buf);
     }
-    if (prepared_ && burn_in_sum_ > 0 && iterations_ == 0)
+    if (prepared_ && burn_in_fixed_ > 0 && iterations_ == 0)
         out.push_back("no MLT step ran in the time given: burn-in took " +
                       std::to_string(prepare_seconds_) +
                       " s; give more time or fewer --burn-in-iters");
@@ -320,19 +337,39 @@ std::string MltRenderer::summary(double) const {
     return buf;
 }
 
-Image MltRenderer::image() const {
+std::uint64_t MltRenderer::units_for_spp(std::uint32_t spp, int rank, int ranks) const {
+    std::uint64_t mutations = rank_share(std::uint64_t(spp) * pixels(), rank, ranks);
+    return (mutations + opt_.threads - 1) / opt_.threads;
+}
+
+Tally MltRenderer::tally() const {
     // The film with the stay weights the chains have gathered and not yet
     // splatted, which are then taken out again.
     owed(kOwedAdd);
-    std::vector<std::uint64_t> acc = film_.read();
+    Tally t;
+    t.ints = film_.read();
     owed(kOwedUndo);
     cl_.finish("kernel mlt_owed over " + std::to_string(chains()) + " chains");
+    const int shift = FILM64_FRAC_BITS - int(film_.plan().shape.frac_bits);
+    for (std::uint64_t& w : t.ints)
+        w <<= shift;
+    MltStats s = stats();
+    t.ints.insert(t.ints.end(),
+                  {s.mutations, burn_in_fixed_, burn_in_samples_, s.large_lum, s.large});
+    t.reals = {burn_in_sum2_};
+    return t;
+}
+
+Image MltRenderer::image_from(const Tally& summed) const {
     Image img(int(ds_.frame.width), int(ds_.frame.height));
-    double mutations = double(iterations_) * opt_.threads;
+    const std::size_t n = 3 * pixels();
+    const std::uint64_t* counts = summed.ints.data() + n;
+    double mutations = double(counts[0]);
     if (mutations == 0) return img;
-    double scale = b() * double(pixels()) / mutations / double(film_.plan().shape.scale);
-    for (std::size_t i = 0; i < acc.size(); ++i)
-        img.rgb[i] = float(double(acc[i]) * scale);
+    double b = mlt_b(counts[1] + counts[3], counts[2] + counts[4]);
+    double scale = b * double(pixels()) / mutations / double(1u << FILM64_FRAC_BITS);
+    for (std::size_t i = 0; i < n; ++i)
+        img.rgb[i] = float(double(summed.ints[i]) * scale);
     return img;
 }
 

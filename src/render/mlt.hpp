@@ -109,6 +109,12 @@ class BurnInPicker {
     double total_ = 0; // luminance sum of the rounds so far
 };
 
+// A large step's or burn-in sample's luminance I in MLT_B_FRAC_BITS fixed
+// point (mlt_b_sample of cl/mlt_step.cl); 0 unless I > 0.
+std::uint64_t b_sample_fixed(float lum);
+// b from the fixed-point sum of `samples` luminances.
+double mlt_b(std::uint64_t lum_fixed, std::uint64_t samples);
+
 // Above this relative standard error of b, a render says so (b scales the
 // whole image; its error is not reduced by running the chains longer).
 constexpr double kMaxBRelError = 0.01;
@@ -127,16 +133,15 @@ class MltRenderer : public Integrator {
 
     void prepare() override;
     void advance(std::uint32_t units) override { step(units); }
-    std::uint64_t units_for_spp(std::uint32_t spp) const override {
-        return (std::uint64_t(spp) * pixels() + opt_.threads - 1) / opt_.threads;
-    }
+    // Steps that make the rank's share of spp x pixels mutations.
+    std::uint64_t units_for_spp(std::uint32_t spp, int rank, int ranks) const override;
     double spp_done() const override {
         return double(iterations_) * opt_.threads / double(pixels());
     }
     std::string summary(double seconds) const override;
     // No OMC sample of burn-in carried light: the image is black whatever the
     // chains do.
-    bool finished() const override { return prepared_ && burn_in_sum_ == 0; }
+    bool finished() const override { return prepared_ && burn_in_fixed_ == 0; }
     std::vector<std::string> notes() const override;
 
     // Runs the OMC samples of burn-in: the first estimate of b, and the
@@ -160,8 +165,13 @@ class MltRenderer : public Integrator {
     MltStats stats() const;
     // Packed numbers plus the ChainValue (F(x), live bounces).
     std::uint32_t state_bytes_per_chain() const;
-    // b * splats * pixels / mutations.
-    Image image() const override;
+    // ints: the film with what the chains owe, per pixel and channel in units
+    // of 2^-FILM64_FRAC_BITS, then mutations, the burn-in's luminance sum
+    // (MLT_B_FRAC_BITS fixed point) and sample count, the large steps' sum
+    // and count; reals: the burn-in's sum of squared luminances.
+    Tally tally() const override;
+    // b * splats * pixels / mutations, b from the summed samples.
+    Image image_from(const Tally& summed) const override;
     const MltFilm& film() const { return film_; }
 
     // For tests: the raw buffers.
@@ -186,7 +196,8 @@ class MltRenderer : public Integrator {
         double b = 0, rel_error = 0;
     };
     BEstimate b_estimate(const MltStats& s) const;
-    double burn_in_sum_ = 0, burn_in_variance_ = 0; // of I over the burn-in's samples
+    std::uint64_t burn_in_fixed_ = 0; // sum of I over the burn-in's samples, MLT_B_FRAC_BITS
+    double burn_in_sum2_ = 0, burn_in_variance_ = 0; // of I over the burn-in's samples
     std::uint64_t burn_in_samples_ = 0;
     bool prepared_ = false;
     std::uint32_t iterations_ = 0;

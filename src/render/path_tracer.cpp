@@ -1,5 +1,7 @@
 #include "render/path_tracer.hpp"
 
+#include "render/ranks.hpp"
+
 #include <algorithm>
 #include <cstdio>
 
@@ -21,13 +23,15 @@ std::uint64_t max_alloc(const ClContext& cl, std::uint64_t given) {
 } // namespace
 
 PathTracer::PathTracer(const ClContext& cl, const DeviceScene& ds, std::uint64_t seed,
-                       PtSampler sampler, std::uint64_t max_alloc_bytes)
+                       PtSampler sampler, std::uint64_t max_alloc_bytes,
+                       std::uint32_t sample_offset, std::uint32_t sample_stride)
     : cl_(cl), ds_(ds), seed_(seed), plan_(plan_pt(ds, max_alloc(cl, max_alloc_bytes))),
       program_(cl.build(pt_program_files(sampler), ds.layout.defines())),
       kernel_(program_.p, "pt_render"), scene_(cl, ds),
       stats_(cl, CL_MEM_READ_WRITE, plan_.bytes("stats")),
       band_pixels_(
-          film_bands(pixels(), kPtFilmPixelBytes, max_alloc(cl, max_alloc_bytes)).band_pixels) {
+          film_bands(pixels(), kPtFilmPixelBytes, max_alloc(cl, max_alloc_bytes)).band_pixels),
+      sample_offset_(sample_offset), sample_stride_(sample_stride) {
     for (std::uint64_t first = 0; first < pixels(); first += band_pixels_) {
         bands_.emplace_back(cl, CL_MEM_READ_WRITE,
                             std::min(band_pixels_, pixels() - first) * kPtFilmPixelBytes);
@@ -43,7 +47,8 @@ void PathTracer::add_samples(std::uint32_t n) {
     for (std::size_t b = 0; b < bands_.size(); ++b) {
         std::uint64_t first = b * band_pixels_, size = std::min(band_pixels_, pixels() - first);
         kernel_.set_args(scene_.tris, scene_.nodes, scene_.mats, scene_.lights, ds_.frame, seed,
-                         first_sample, count, cl_uint(first), cl_uint(size), bands_[b], stats_);
+                         first_sample, count, cl_uint(sample_offset_), cl_uint(sample_stride_),
+                         cl_uint(first), cl_uint(size), bands_[b], stats_);
         kernel_.enqueue(cl_, size);
     }
     cl_.finish("kernel pt_render over " + std::to_string(pixels()) + " pixels");
@@ -82,17 +87,29 @@ std::uint64_t PathTracer::rays() const {
     return stat(PT_STAT_RAYS);
 }
 
-Image PathTracer::image() const {
-    Image img(int(ds_.frame.width), int(ds_.frame.height));
-    float inv = spp_ ? 1.0f / float(spp_) : 0.0f;
+std::uint64_t PathTracer::units_for_spp(std::uint32_t spp, int rank, int ranks) const {
+    return rank_share(spp, rank, ranks);
+}
+
+Tally PathTracer::tally() const {
+    Tally t;
+    t.ints = {spp_};
+    t.reals.resize(3 * pixels());
     std::vector<float> sums;
     for (std::size_t b = 0; b < bands_.size(); ++b) {
         sums.resize(bands_[b].bytes() / sizeof(float));
         bands_[b].read(cl_, sums.data());
-        float* out = img.rgb.data() + 3 * b * band_pixels_;
-        for (std::size_t i = 0; i < sums.size(); ++i)
-            out[i] = sums[i] * inv;
+        std::copy(sums.begin(), sums.end(), t.reals.begin() + 3 * b * band_pixels_);
     }
+    return t;
+}
+
+Image PathTracer::image_from(const Tally& summed) const {
+    Image img(int(ds_.frame.width), int(ds_.frame.height));
+    double spp = double(summed.ints.at(0));
+    if (spp == 0) return img;
+    for (std::size_t i = 0; i < img.rgb.size(); ++i)
+        img.rgb[i] = float(summed.reals[i] / spp);
     return img;
 }
 

@@ -24,12 +24,15 @@ std::vector<std::string> pt_program_files(PtSampler sampler);
 
 class PathTracer : public Integrator {
   public:
-    // The film's bands fit max_alloc_bytes (0: the device's largest allocation).
+    // The film's bands fit max_alloc_bytes (0: the device's largest
+    // allocation). Sample k of a pixel is number offset + k * stride of its
+    // sequence: rank r of R renders offset r, stride R (src/render/ranks.hpp).
     PathTracer(const ClContext& cl, const DeviceScene& ds, std::uint64_t seed,
-               PtSampler sampler = PtSampler::Sobol, std::uint64_t max_alloc_bytes = 0);
+               PtSampler sampler = PtSampler::Sobol, std::uint64_t max_alloc_bytes = 0,
+               std::uint32_t sample_offset = 0, std::uint32_t sample_stride = 1);
 
     void advance(std::uint32_t units) override { add_samples(units); }
-    std::uint64_t units_for_spp(std::uint32_t spp) const override { return spp; }
+    std::uint64_t units_for_spp(std::uint32_t spp, int rank, int ranks) const override;
     double spp_done() const override { return spp_; }
     std::string summary(double seconds) const override;
 
@@ -42,7 +45,9 @@ class PathTracer : public Integrator {
     std::vector<std::string> notes() const override;
     std::uint64_t pixels() const { return std::uint64_t(ds_.frame.width) * ds_.frame.height; }
 
-    Image image() const; // mean radiance per pixel
+    // The sums of R, G, B per pixel (reals) and the samples per pixel (ints[0]).
+    Tally tally() const override;
+    Image image_from(const Tally& summed) const override; // mean radiance per pixel
 
   private:
     const ClContext& cl_;
@@ -56,6 +61,7 @@ class PathTracer : public Integrator {
     std::vector<ClBuffer> bands_; // the film: sums of R, G, B per pixel
     ClBuffer stats_;              // PT_STAT_COUNT per work-group
     std::uint64_t band_pixels_;
+    std::uint32_t sample_offset_, sample_stride_;
     // Sums of the rows of stats.
     std::uint64_t stat(int which) const;
 };

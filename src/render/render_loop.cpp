@@ -4,7 +4,9 @@
 #include "base/interrupt.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <string>
+#include <thread>
 
 namespace smallmlt {
 
@@ -41,20 +43,31 @@ void show_progress(Progress& progress, const Integrator& m, const LoopLimits& li
 } // namespace
 
 LoopResult render_loop(Integrator& m, const LoopLimits& limits, ConvergenceLog* log,
-                       Progress& progress) {
+                       Progress& progress, RankGroup& ranks) {
     RenderClock clock;
     m.prepare();
-    std::uint64_t target = limits.spp ? m.units_for_spp(*limits.spp) : 0, done = 0;
+    std::uint64_t target =
+        limits.spp ? m.units_for_spp(*limits.spp, ranks.rank(), ranks.size()) : 0;
+    std::uint64_t done = 0;
     std::uint32_t batch = 1;
     LoopResult r;
     for (;;) {
         double now = clock.now();
         if (log && log->due(now) && m.spp_done() > 0)
             clock.pause_for([&] { log->record(now, m.spp_done(), m.image()); });
-        if (m.finished() || (limits.spp ? done >= target : now >= *limits.time_s)) break;
-        if (interrupt_requested()) {
+        // Every rank votes once per pass: with --spp when its share is done,
+        // with --time rank 0's clock decides for all.
+        bool finished = m.finished() || (limits.spp && done >= target);
+        bool vote = finished || (!limits.spp && (ranks.rank() != 0 || now >= *limits.time_s));
+        if (ranks.any(interrupt_requested())) {
             r.interrupted = true;
             break;
+        }
+        if (ranks.all(vote)) break;
+        ++r.passes;
+        if (finished) { // others still render
+            std::this_thread::sleep_for(std::chrono::milliseconds(10));
+            continue;
         }
         show_progress(progress, m, limits, done, target, now);
         std::uint64_t n = limits.spp ? std::min<std::uint64_t>(batch, target - done) : batch;

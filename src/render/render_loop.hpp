@@ -7,6 +7,7 @@
 #include "render/convergence_log.hpp"
 #include "render/integrator.hpp"
 #include "render/progress.hpp"
+#include "render/ranks.hpp"
 
 #include <cstdint>
 #include <optional>
@@ -24,10 +25,14 @@ struct LoopLimits {
 struct LoopResult {
     double render_s = 0; // prepare and passes, without measuring
     bool interrupted = false;
+    std::uint32_t passes = 0; // the same on every rank
 };
 
-// `log` may be null.
+// `log` may be null. With several ranks, every rank runs its share in
+// lockstep passes: a signal on any rank stops all after the current pass,
+// --time stops all when rank 0's time is up, --spp when every rank's share
+// is done (a rank done early waits).
 LoopResult render_loop(Integrator& method, const LoopLimits& limits, ConvergenceLog* log,
-                       Progress& progress);
+                       Progress& progress, RankGroup& ranks);
 
 } // namespace smallmlt

@@ -1,0 +1,83 @@
+// smallmlt-mpi: `mpirun -np R smallmlt-mpi render SCENE ...` renders one
+// image with R ranks, each on its own device (src/render/ranks.hpp); rank 0
+// writes the outputs. Other commands run on rank 0 alone. Errors become
+// messages naming the rank and host, and exit codes as in smallmlt; an
+// error after the ranks have started rendering aborts the whole job.
+#include "app/cli.hpp"
+#include "app/commands.hpp"
+#include "base/error.hpp"
+#include "mpi/mpi_ranks.hpp"
+
+#include <cstdio>
+#include <exception>
+
+namespace {
+
+// A command other than render, on rank 0.
+int run_alone(const smallmlt::Command& c) {
+    using namespace smallmlt;
+    switch (c.kind) {
+    case CommandKind::Help:
+        std::fputs(usage_text(), stdout);
+        return 0;
+    case CommandKind::Version:
+        std::puts("smallmlt-mpi");
+        return 0;
+    case CommandKind::Budget:
+        return run_budget(c.budget);
+    case CommandKind::Compare:
+        return run_compare(c.image, c.reference);
+    case CommandKind::Devices:
+        return run_devices();
+    case CommandKind::Render:
+        break;
+    }
+    return 0;
+}
+
+int run(int argc, char** argv, smallmlt::MpiRanks& ranks) {
+    using namespace smallmlt;
+    Command c = parse_command_line(argc, argv); // the same on every rank
+    if (c.kind == CommandKind::Render) return run_render(c.render, ranks);
+    if (ranks.rank() != 0) return 0;
+    try {
+        return run_alone(c);
+    } catch (const UsageError& e) {
+        std::fprintf(stderr, "smallmlt-mpi: %s\n", e.what());
+        return kExitUsageError;
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "smallmlt-mpi: %s\n", e.what());
+        return kExitInputError;
+    }
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+    using namespace smallmlt;
+    MPI_Init(&argc, &argv);
+    int code = 0;
+    {
+        MpiRanks ranks;
+        // The command line is the same on every rank: rank 0 reports it. A
+        // render that cannot start on some rank is reported by every rank
+        // (RankFailure); a failure while rendering aborts the job, so that
+        // no rank waits for the one that failed.
+        try {
+            code = run(argc, argv, ranks);
+        } catch (const UsageError& e) {
+            if (ranks.rank() == 0 || ranks.size() == 1)
+                std::fprintf(stderr, "smallmlt-mpi: %s\n", e.what());
+            code = kExitUsageError;
+        } catch (const RankFailure& e) {
+            std::fprintf(stderr, "smallmlt-mpi: %s\n", e.what());
+            code = e.exit_code;
+        } catch (const std::exception& e) {
+            std::fprintf(stderr, "smallmlt-mpi: rank %d on %s: %s\n", ranks.rank(),
+                         ranks.host().c_str(), e.what());
+            MPI_Abort(MPI_COMM_WORLD, kExitInputError);
+        }
+    }
+    MPI_Finalize();
+    return code;
+}
