@@ -3,7 +3,8 @@
 # (bench/error_time.sh), throughput against thread count (threads.sh),
 # memory against depth (memory.sh), the burn-in and split-transition image
 # strips (burnin.sh, proposals.sh), stuck chains (stuck.sh), and throughput
-# (throughput.sh, mlt_vs_pt.sh, film_atomics.sh). Writes bench/results/ (or RESULTS); with
+# (throughput.sh, mlt_vs_pt.sh, film_atomics.sh), and ranks against one
+# process (ranks.sh, smallmlt-mpi). Writes bench/results/ (or RESULTS); with
 # PUBLISH=1 copies the charts to doc/img/. About an hour on 2 cores.
 # QUICK=1 (`make bench-quick`) runs every part at toy sizes and times, in
 # under 2 minutes, to check that the suite works, not to measure.
@@ -33,6 +34,8 @@ if [ -n "${QUICK:-}" ]; then
     SIZE=32 SECONDS=1 SEEDS=1 LARGE_STEPS="0.1 0.5" LOG_EVERY=0.25 sh bench/stuck.sh "$BIN"
     step 32-bit against 64-bit film
     SIZES=16 SCENES=cornell SPP=4 RUNS=1 sh bench/film_atomics.sh "$BIN"
+    step ranks against one process
+    SIZE=16 SPP=1 TIMES=0.5 RUNS=1 sh bench/ranks.sh "$BIN"
 else
     step error against time
     sh bench/error_time.sh "$BIN"
@@ -51,6 +54,8 @@ else
     sh bench/mlt_vs_pt.sh "$BIN" 5
     step 32-bit against 64-bit film
     sh bench/film_atomics.sh "$BIN"
+    step ranks against one process
+    sh bench/ranks.sh "$BIN"
 fi
 step done
 if [ -n "${PUBLISH:-}" ]; then

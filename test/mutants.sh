@@ -20,7 +20,7 @@ mkdir -p "$TREE"
 git ls-files -co --exclude-standard -z | tar --null -T - -cf - | tar -xf - -C "$TREE"
 cd "$TREE" || exit 2
 echo "building the unmutated tree"
-make -s -j"$JOBS" build/smallmlt build/smallmlt_tests >"$OUT/build.log" 2>&1 ||
+make -s -j"$JOBS" all build/smallmlt_tests >"$OUT/build.log" 2>&1 ||
     { echo "the unmutated tree does not build (build/mutants/build.log)"; exit 2; }
 
 REPORT=$OUT/report.md
@@ -44,7 +44,7 @@ run_one() {
         return
     fi
     FROM=$from TO=$to perl -0pi -e 's/\Q$ENV{FROM}\E/$ENV{TO}/' "$file"
-    if ! make -s -j"$JOBS" build/smallmlt build/smallmlt_tests >"$OUT/$name.build.log" 2>&1; then
+    if ! make -s -j"$JOBS" all build/smallmlt_tests >"$OUT/$name.build.log" 2>&1; then
         echo "MUTANT $name: does not compile (build/mutants/$name.build.log)"
         printf '| %s | %s | does not compile | | |\n' "$what" "$file" >>"$REPORT"
         broken=$((broken + 1))

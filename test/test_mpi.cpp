@@ -44,6 +44,19 @@ class FakeRank : public RankGroup {
 const char* kMpirun = "OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 timeout 120 "
                       "mpirun --oversubscribe -np ";
 
+// The smallmlt binary under test (SMALLMLT_BIN, as test/run_all.sh sets
+// it), and smallmlt-mpi beside it.
+std::string smallmlt_bin() {
+    const char* b = std::getenv("SMALLMLT_BIN");
+    return b ? b : "build/smallmlt";
+}
+
+std::string mpi_bin() {
+    std::string b = smallmlt_bin();
+    std::size_t slash = b.find_last_of('/');
+    return (slash == std::string::npos ? "" : b.substr(0, slash + 1)) + "smallmlt-mpi";
+}
+
 std::vector<std::string> words(const std::string& line) {
     std::vector<std::string> out;
     std::size_t at = 0;
@@ -109,7 +122,7 @@ Rebuilt rebuild(const std::string& args, int ranks) {
 }
 
 Image run_job(const std::string& args, int ranks, const std::string& out) {
-    std::string cmd = std::string(kMpirun) + std::to_string(ranks) + " build/smallmlt-mpi render " +
+    std::string cmd = std::string(kMpirun) + std::to_string(ranks) + " " + mpi_bin() + " render " +
                       args + " --quiet --out " + out + " > " + out + ".log 2>&1";
     int rc = std::system(cmd.c_str());
     EXPECT_EQ(rc, 0) << cmd;
@@ -149,7 +162,7 @@ TEST(MpiRender, OneRankIsSmallmlt) {
     const std::string args = "scenes/cornell.scene --width 16 --height 16 --threads 256 --spp 4 "
                              "--burn-in-iters 4 --seed 4";
     Image job = run_job(args, 1, dir + "/np1.pfm");
-    std::string cmd = "build/smallmlt render " + args + " --quiet --out " + dir + "/one.pfm";
+    std::string cmd = smallmlt_bin() + " render " + args + " --quiet --out " + dir + "/one.pfm";
     ASSERT_EQ(std::system(cmd.c_str()), 0);
     EXPECT_EQ(job.rgb, read_image(dir + "/one.pfm").rgb);
 }
@@ -161,7 +174,7 @@ TEST(MpiRender, PtRanksRenderEverySampleOnce) {
     const std::string args =
         "scenes/cornell-water.scene --method pt --width 24 --height 24 --spp 7";
     Image job = run_job(args, 3, dir + "/np3.pfm");
-    std::string cmd = "build/smallmlt render " + args + " --quiet --out " + dir + "/one.pfm";
+    std::string cmd = smallmlt_bin() + " render " + args + " --quiet --out " + dir + "/one.pfm";
     ASSERT_EQ(std::system(cmd.c_str()), 0);
     Image one = read_image(dir + "/one.pfm");
     double worst = 0;
