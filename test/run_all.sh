@@ -1,41 +1,61 @@
 #!/bin/sh
-# Runs every test: the GoogleTest binary and, beside it, the shell tests
-# (test/*_test.sh, one after another), then prints the combined count as
-# "N passed, N failed". The two run at once because much of the GoogleTest
-# run is single-threaded (kernel builds); each shell test's output is shown
-# after the GoogleTest output, from its log.
+# Runs every test: the GoogleTest binary, as two shards at once, and beside
+# them the shell tests (test/*_test.sh, one after another); then prints the
+# combined count as "N passed, N failed". They run at once because much of
+# a GoogleTest run is single-threaded (PoCL building kernels): two shards
+# keep both cores busy (on 2 cores with no kernel cached, 3 min 6 s against
+# 3 min 57 s for one). The first shard's output is shown as it runs, the
+# second shard's and each shell test's after, from their logs.
 # Usage: run_all.sh TEST_BINARY  (with SMALLMLT_BIN naming the smallmlt binary)
 set -u
 TEST_BIN=$1
 BIN=${SMALLMLT_BIN:-build/smallmlt}
-LOG=build/test-scratch/gtest.log
-mkdir -p build/test-scratch
+export SMALLMLT_BIN=$BIN
+SCRATCH=build/test-scratch
+mkdir -p "$SCRATCH"
 (
     for t in test/*_test.sh; do
         name=$(basename "$t" _test.sh)
-        sh "$t" "$BIN" > "build/test-scratch/$name.log" 2>&1
+        sh "$t" "$BIN" > "$SCRATCH/$name.log" 2>&1
     done
 ) &
 shell_pid=$!
-"$TEST_BIN" 2>&1 | tee "$LOG"
-gtest_rc=$?
+GTEST_TOTAL_SHARDS=2 GTEST_SHARD_INDEX=1 "$TEST_BIN" > "$SCRATCH/gtest-1.log" 2>&1 &
+shard_pid=$!
+{
+    GTEST_TOTAL_SHARDS=2 GTEST_SHARD_INDEX=0 "$TEST_BIN" 2>&1
+    echo $? > "$SCRATCH/gtest-0.rc"
+} | tee "$SCRATCH/gtest-0.log"
+rc0=$(cat "$SCRATCH/gtest-0.rc")
+wait "$shard_pid"
+rc1=$?
 wait "$shell_pid"
-g_pass=$(sed -n 's/^\[  PASSED  \] \([0-9]*\) test.*/\1/p' "$LOG" | tail -n 1)
-g_fail=$(sed -n 's/^\[  FAILED  \] \([0-9]*\) test.*/\1/p' "$LOG" | tail -n 1)
+cat "$SCRATCH/gtest-1.log"
+g_pass=0
+g_fail=0
+for k in 0 1; do
+    log=$SCRATCH/gtest-$k.log
+    p=$(sed -n 's/^\[  PASSED  \] \([0-9]*\) test.*/\1/p' "$log" | tail -n 1)
+    f=$(sed -n 's/^\[  FAILED  \] \([0-9]*\) test.*/\1/p' "$log" | tail -n 1)
+    g_pass=$((g_pass + ${p:-0}))
+    g_fail=$((g_fail + ${f:-0}))
+    # A crashed shard reports no counts: count it as a failure.
+    [ -z "$p$f" ] && g_fail=$((g_fail + 1))
+done
 s_pass=0
 s_fail=0
 for t in test/*_test.sh; do
     name=$(basename "$t" _test.sh)
-    cat "build/test-scratch/$name.log"
-    line=$(grep "^$name: [0-9]* passed, [0-9]* failed$" "build/test-scratch/$name.log")
+    cat "$SCRATCH/$name.log"
+    line=$(grep "^$name: [0-9]* passed, [0-9]* failed$" "$SCRATCH/$name.log")
     # A script that stops before its summary counts as a failure.
     if [ -z "$line" ]; then s_fail=$((s_fail + 1)); continue; fi
     s_pass=$((s_pass + $(echo "$line" | awk '{print $2}')))
     s_fail=$((s_fail + $(echo "$line" | awk '{print $4}')))
 done
-passed=$(( ${g_pass:-0} + s_pass ))
-failed=$(( ${g_fail:-0} + s_fail ))
-# A crashed test binary reports no counts: count it as a failure.
-if [ "$gtest_rc" -ne 0 ] && [ "${g_fail:-0}" -eq 0 ]; then failed=$((failed + 1)); fi
+passed=$((g_pass + s_pass))
+failed=$((g_fail + s_fail))
+# A shard that exits non-zero without counting a failure still fails.
+if [ "$rc0" -ne 0 ] || [ "$rc1" -ne 0 ]; then [ "$g_fail" -eq 0 ] && failed=$((failed + 1)); fi
 echo "all: $passed passed, $failed failed"
 [ "$failed" -eq 0 ]
