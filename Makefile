@@ -32,6 +32,9 @@ TEST_SRC   := $(wildcard test/*.cpp)
 TEST_OBJ   := $(TEST_SRC:test/%.cpp=$(BUILD)/obj/test/%.o)
 BIN        := $(BUILD)/smallmlt
 TEST_BIN   := $(BUILD)/smallmlt_tests
+# Test code is mostly calls into the library and the device: compiled
+# lighter, it builds in a third less time (sanitizer builds keep -g).
+TEST_OPT   := $(if $(filter 1,$(SAN)),,-O1 -g0)
 # smallmlt-mpi, the same renderer over MPI ranks, when Open MPI is installed.
 MPICXX     := $(shell command -v mpicxx 2>/dev/null)
 MPI_BIN    := $(if $(MPICXX),$(BUILD)/smallmlt-mpi)
@@ -64,7 +67,7 @@ $(BUILD)/obj/%.o: src/%.cpp
 
 $(BUILD)/obj/test/%.o: test/%.cpp
 	@mkdir -p $(dir $@)
-	$(CXX) $(CXXFLAGS) -Itest -c $< -o $@
+	$(CXX) $(CXXFLAGS) $(TEST_OPT) -Itest -c $< -o $@
 
 $(BUILD)/libsmallmlt.a: $(LIB_OBJ)
 	ar rcs $@ $^
