@@ -1,11 +1,12 @@
 #!/bin/sh
-# Runs every test: the GoogleTest binary, as two shards at once, and beside
-# them the shell tests (test/*_test.sh, one after another); then prints the
-# combined count as "N passed, N failed". They run at once because much of
-# a GoogleTest run is single-threaded (PoCL building kernels): two shards
-# keep both cores busy (on 2 cores with no kernel cached, 3 min 6 s against
-# 3 min 57 s for one). The first shard's output is shown as it runs, the
-# second shard's and each shell test's after, from their logs.
+# Runs every test: the GoogleTest binary, as SHARDS shards at once (default
+# 3), and beside them the shell tests (test/*_test.sh, one after another);
+# then prints the combined count as "N passed, N failed". They run at once
+# because much of a GoogleTest run is single-threaded (PoCL building
+# kernels): shards keep both cores busy (on 2 cores with no kernel cached,
+# two shards took 3 min 6 s against 3 min 57 s for one). The first shard's
+# output is shown as it runs, the others' and each shell test's after, from
+# their logs.
 # Usage: run_all.sh TEST_BINARY  (with SMALLMLT_BIN naming the smallmlt binary)
 set -u
 TEST_BIN=$1
@@ -13,27 +14,32 @@ BIN=${SMALLMLT_BIN:-build/smallmlt}
 export SMALLMLT_BIN=$BIN
 SCRATCH=build/test-scratch
 mkdir -p "$SCRATCH"
+rm -f "$SCRATCH"/gtest-*.rc "$SCRATCH"/gtest-*.log
 (
     for t in test/*_test.sh; do
         name=$(basename "$t" _test.sh)
         sh "$t" "$BIN" > "$SCRATCH/$name.log" 2>&1
     done
 ) &
-shell_pid=$!
-GTEST_TOTAL_SHARDS=2 GTEST_SHARD_INDEX=1 "$TEST_BIN" > "$SCRATCH/gtest-1.log" 2>&1 &
-shard_pid=$!
+SHARDS=${SHARDS:-3}
+export GTEST_TOTAL_SHARDS=$SHARDS
+for k in $(seq 1 $((SHARDS - 1))); do
+    {
+        GTEST_SHARD_INDEX=$k "$TEST_BIN" > "$SCRATCH/gtest-$k.log" 2>&1
+        echo $? > "$SCRATCH/gtest-$k.rc"
+    } &
+done
 {
-    GTEST_TOTAL_SHARDS=2 GTEST_SHARD_INDEX=0 "$TEST_BIN" 2>&1
+    GTEST_SHARD_INDEX=0 "$TEST_BIN" 2>&1
     echo $? > "$SCRATCH/gtest-0.rc"
 } | tee "$SCRATCH/gtest-0.log"
-rc0=$(cat "$SCRATCH/gtest-0.rc")
-wait "$shard_pid"
-rc1=$?
-wait "$shell_pid"
-cat "$SCRATCH/gtest-1.log"
+wait
 g_pass=0
 g_fail=0
-for k in 0 1; do
+shard_failed=0
+for k in $(seq 0 $((SHARDS - 1))); do
+    [ "$k" -gt 0 ] && cat "$SCRATCH/gtest-$k.log"
+    [ "$(cat "$SCRATCH/gtest-$k.rc")" = 0 ] || shard_failed=1
     log=$SCRATCH/gtest-$k.log
     p=$(sed -n 's/^\[  PASSED  \] \([0-9]*\) test.*/\1/p' "$log" | tail -n 1)
     f=$(sed -n 's/^\[  FAILED  \] \([0-9]*\) test.*/\1/p' "$log" | tail -n 1)
@@ -56,6 +62,6 @@ done
 passed=$((g_pass + s_pass))
 failed=$((g_fail + s_fail))
 # A shard that exits non-zero without counting a failure still fails.
-if [ "$rc0" -ne 0 ] || [ "$rc1" -ne 0 ]; then [ "$g_fail" -eq 0 ] && failed=$((failed + 1)); fi
+if [ "$shard_failed" -ne 0 ] && [ "$g_fail" -eq 0 ]; then failed=$((failed + 1)); fi
 echo "all: $passed passed, $failed failed"
 [ "$failed" -eq 0 ]
