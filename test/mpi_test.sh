@@ -34,7 +34,7 @@ check bad_flag 2 "unknown option --fast" -- $MPIRUN -np 2 "$MPI_BIN" render scen
 check log_refused 2 "--log $DIR/l.csv: one process only" -- $MPIRUN -np 2 "$MPI_BIN" render $SMALL --spp 1 --reference "$DIR/none.pfm" --log "$DIR/l.csv"
 check device_range 2 "--device: index 7 out of range" -- $MPIRUN -np 2 "$MPI_BIN" render $SMALL --spp 1 --device 7 --out "$DIR/dev.pfm"
 # --time: every rank stops after the same pass.
-out=$($MPIRUN -np 3 "$MPI_BIN" render $SMALL --time 1.5 --out "$DIR/time.pfm" 2>&1)
+out=$($MPIRUN -np 3 "$MPI_BIN" render $SMALL --time 0.8 --out "$DIR/time.pfm" 2>&1)
 rc=$?
 truth time_exit [ "$rc" -eq 0 ]
 passes=$(printf '%s' "$out" | sed -n 's/.*passes per rank \([0-9 ]*\),.*/\1/p')
