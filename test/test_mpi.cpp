@@ -123,7 +123,7 @@ Rebuilt rebuild(const std::string& args, int ranks) {
 
 Image run_job(const std::string& args, int ranks, const std::string& out) {
     std::string cmd = std::string(kMpirun) + std::to_string(ranks) + " " + mpi_bin() + " render " +
-                      args + " --quiet --out " + out + " > " + out + ".log 2>&1";
+                      args + " --quiet --out " + out + " < /dev/null > " + out + ".log 2>&1";
     int rc = std::system(cmd.c_str());
     EXPECT_EQ(rc, 0) << cmd;
     return read_image(out);
