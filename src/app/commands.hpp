@@ -12,6 +12,10 @@
 
 namespace smallmlt {
 
+// dispatch.cpp: runs command c of `program` (smallmlt or smallmlt-mpi):
+// render on every rank, the others on rank 0 alone.
+int run_command(const Command& c, const char* program, RankGroup& ranks);
+
 // render_command.cpp: `ranks` render one image together (one in smallmlt).
 int run_render(const RenderOptions& o, RankGroup& ranks);
 // The method rank ranks.rank() of ranks.size() runs for `o` on `cl`, sized

@@ -13,35 +13,12 @@
 
 namespace {
 
-// A command other than render, on rank 0.
-int run_alone(const smallmlt::Command& c) {
-    using namespace smallmlt;
-    switch (c.kind) {
-    case CommandKind::Help:
-        std::fputs(usage_text(), stdout);
-        return 0;
-    case CommandKind::Version:
-        std::puts("smallmlt-mpi");
-        return 0;
-    case CommandKind::Budget:
-        return run_budget(c.budget);
-    case CommandKind::Compare:
-        return run_compare(c.image, c.reference);
-    case CommandKind::Devices:
-        return run_devices();
-    case CommandKind::Render:
-        break;
-    }
-    return 0;
-}
-
 int run(int argc, char** argv, smallmlt::MpiRanks& ranks) {
     using namespace smallmlt;
     Command c = parse_command_line(argc, argv); // the same on every rank
-    if (c.kind == CommandKind::Render) return run_render(c.render, ranks);
-    if (ranks.rank() != 0) return 0;
+    if (c.kind == CommandKind::Render) return run_command(c, "smallmlt-mpi", ranks);
     try {
-        return run_alone(c);
+        return run_command(c, "smallmlt-mpi", ranks); // on rank 0 alone
     } catch (const UsageError& e) {
         std::fprintf(stderr, "smallmlt-mpi: %s\n", e.what());
         return kExitUsageError;
