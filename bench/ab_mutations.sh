@@ -37,11 +37,5 @@ for scene in $SCENES; do
     done
 done
 rm -f "$OUT/last.pfm"
-awk -F, 'function median(a, n,    i, j, t) {
-        for (i = 2; i <= n; ++i) for (j = i; j > 1 && a[j - 1] > a[j]; --j) { t = a[j]; a[j] = a[j - 1]; a[j - 1] = t }
-        return n % 2 ? a[(n + 1) / 2] : (a[n / 2] + a[n / 2 + 1]) / 2 }
-    NR > 1 { k = $1 SUBSEP $2; n = ++cnt[k]; v[k, n] = $4; at[k] = $5; if (!($1 in seen)) { seen[$1] = 1; sc[++ns] = $1 } }
-    END { print "scene,A_mutations_per_s,B_mutations_per_s,ratio_B_over_A,A_atomics_per_mutation,B_atomics_per_mutation"
-        for (i = 1; i <= ns; ++i) { for (b = 0; b < 2; ++b) { k = sc[i] SUBSEP (b ? "B" : "A"); for (j = 1; j <= cnt[k]; ++j) x[j] = v[k, j]; m[b] = median(x, cnt[k]) }
-            printf "%s,%.4g,%.4g,%.3f,%s,%s\n", sc[i], m[0], m[1], m[1] / m[0], at[sc[i] SUBSEP "A"], at[sc[i] SUBSEP "B"] } }' \
+awk -F, -f bench/median.awk -f bench/ab_summary.awk \
     "$OUT/runs.csv" | tee "$OUT/summary.csv"

@@ -55,7 +55,7 @@ for scene in $SCENES; do
         "$scene ${SIZE}x$SIZE, seed $first (reference: PT, $(sed -n 's/.* \([0-9]* spp\).*/\1/p' "${ref%.pfm}.txt"))" \
         "pt=PT" "mlt-none=MLT, no burn-in, large step 0.5" "mlt=MLT, OMC burn-in (default)" \
         "mlt-k2=split-transition K = 2" "mlt-k4=split-transition K = 4"
-    awk -F, -v scene="$scene" -f bench/time_to_error.awk "$csv" >> "$OUT/time_to_error.csv"
+    awk -F, -v scene="$scene" -f bench/median.awk -f bench/time_to_error.awk "$csv" >> "$OUT/time_to_error.csv"
 done
 echo
 echo "time to reach the error every PT render reached at $SECONDS_ s, ${SIZE}x$SIZE, medians over seeds ($SEEDS);"

@@ -42,4 +42,4 @@ for scene in $SCENES; do
     done
 done
 rm -f "$OUT/last.pfm" "$OUT/last.txt"
-awk -F, -f bench/pt_summary.awk "$csv" | tee "$OUT/$NAME-summary.csv"
+awk -F, -f bench/median.awk -f bench/pt_summary.awk "$csv" | tee "$OUT/$NAME-summary.csv"

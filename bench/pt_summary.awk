@@ -2,11 +2,6 @@
 # mse,rel_mse": medians over seeds per (scene, setting), each setting's median
 # MSE and relative MSE as a ratio of the first setting's, then per setting the
 # geometric mean of those ratios over the scenes.
-function median(a, n,    i, j, t) {
-    for (i = 2; i <= n; ++i)
-        for (j = i; j > 1 && a[j - 1] > a[j]; --j) { t = a[j]; a[j] = a[j - 1]; a[j - 1] = t }
-    return n % 2 ? a[(n + 1) / 2] : (a[n / 2] + a[n / 2 + 1]) / 2
-}
 NR == 1 { next }
 {
     if (!($1 in seen_scene)) { seen_scene[$1] = 1; scenes[++ns] = $1 }

@@ -48,12 +48,4 @@ for run in $(seq 1 "$RUNS"); do
     done
 done
 rm -f "$OUT/last.pfm"
-awk -F, 'function median(a, n,    i, j, t) {
-        for (i = 2; i <= n; ++i) for (j = i; j > 1 && a[j - 1] > a[j]; --j) { t = a[j]; a[j] = a[j - 1]; a[j - 1] = t }
-        return n % 2 ? a[(n + 1) / 2] : (a[n / 2] + a[n / 2 + 1]) / 2 }
-    NR > 1 { k = $1 SUBSEP $3; n = ++cnt[k]; v[k, n] = $4
-        if (!($1 in sc)) { sc[$1] = 1; cs[++nc] = $1 } if (!($3 in sw)) { sw[$3] = 1; ws[++nw] = $3 } }
-    END { printf "config"; for (j = 1; j <= nw; ++j) printf ",%s", ws[j]; print ""
-        for (i = 1; i <= nc; ++i) { printf "%s", cs[i]
-            for (j = 1; j <= nw; ++j) { k = cs[i] SUBSEP ws[j]; for (r = 1; r <= cnt[k]; ++r) x[r] = v[k, r]; printf ",%.4g", median(x, cnt[k]) }
-            print "" } }' "$OUT/runs.csv" | tee "$OUT/summary.csv"
+awk -F, -f bench/median.awk -f bench/ranks_summary.awk "$OUT/runs.csv" | tee "$OUT/summary.csv"

@@ -45,7 +45,7 @@ set -- "pt=PT"
 for p in $LARGE_STEPS; do set -- "$@" "mlt-p$p=MLT, large step $p"; done
 sh bench/plot_error.sh "$OUT/error-seed$first.csv" "$OUT/error.png" \
     "$SCENE ${SIZE}x$SIZE, $THREADS MLT threads, seed $first" "$@"
-awk -F, -v scene="$SCENE" -f bench/time_to_error.awk "$csv" > "$OUT/time_to_error.csv"
+awk -F, -v scene="$SCENE" -f bench/median.awk -f bench/time_to_error.awk "$csv" > "$OUT/time_to_error.csv"
 echo "time to reach PT's error at $SECONDS_ s (ratio < 1: faster than PT; medians over seeds $SEEDS):"
 column -s, -t "$OUT/time_to_error.csv"
 echo "stuck chains (a run of rejections of the default length or more) at the end of each render:"

@@ -6,12 +6,7 @@
 # log-log against the row before; one that never does is extrapolated from
 # its last row as MSE ~ 1/t (the Monte Carlo rate) and marked. Prints
 # "scene,method,ratio_to_pt,seconds,pt_seconds,target_mse,reached" with
-# medians over seeds. Usage: awk -F, -v scene=NAME -f time_to_error.awk CSV
-function median(a, n,    i, j, t) {
-    for (i = 2; i <= n; ++i)
-        for (j = i; j > 1 && a[j - 1] > a[j]; --j) { t = a[j]; a[j] = a[j - 1]; a[j - 1] = t }
-    return n % 2 ? a[(n + 1) / 2] : (a[n / 2] + a[n / 2 + 1]) / 2
-}
+# medians over seeds. Usage: awk -F, -v scene=NAME -f median.awk -f time_to_error.awk CSV
 NR == 1 { next }
 {
     key = $1 SUBSEP $2
