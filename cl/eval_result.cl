@@ -2,7 +2,8 @@
  * splats to: shared by every evaluator (eval_path.cl, eval_target.cl). */
 
 typedef struct {
-    float3 f;     /* F: RGB contribution */
+    float3 f;     /* F: RGB contribution (the MLT part) */
+    float3 omc;   /* the OMC part of the split, RGB (0 without one) */
     uint pixel;   /* where it splats */
     uint bounces; /* live bounces of the state (PathResult.bounces) */
     uint rays;
@@ -18,6 +19,7 @@ inline uint eval_pixel(const Frame* frame, float fx, float fy) {
 inline EvalResult eval_nothing(void) {
     EvalResult s;
     s.f = (float3)(0.0f);
+    s.omc = (float3)(0.0f);
     s.pixel = 0u;
     s.bounces = 0u;
     s.rays = 0u;

@@ -91,6 +91,7 @@ inline EvalResult eval_state(const SceneView* sc, const Frame* frame, SampleSour
 #endif
     EvalResult s;
     s.f = (float3)(f);
+    s.omc = (float3)(0.0f);
     s.pixel = eval_pixel(frame, x, y);
     s.bounces = bounces;
     s.rays = 0u;

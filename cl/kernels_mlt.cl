@@ -4,13 +4,16 @@
  * in mlt_step.cl, the film in film.cl. Every kernel runs in work-groups of
  * MLT_GROUP and counts into its group's row of stats. */
 
-/* Luminance of the OMC path of each key rng_key(seed, first + i, 0): the
- * normalization b = E[I] is their mean. */
+/* Luminance I of the OMC path of each key rng_key(seed, first + i, 0): the
+ * normalization b = E[I] is their mean. With a split (PATH_SPLIT > 0) the
+ * path's OMC part and pixel go to omc[i] (xyz: RGB; w: the pixel's bits),
+ * so that the burn-in's paths also render the OMC part (the host adds them
+ * in sample order: no atomics, and the same sums every time). */
 __kernel void mlt_luminance(__global const Triangle* tris, __global const BvhNode* nodes,
                             __global const Material* mats, __global const LightEntry* lights,
                             const Frame frame, __global uint* state, const ulong seed,
                             const uint first, const uint count, __global float* lum,
-                            __global ulong* stats) {
+                            __global float4* omc, __global ulong* stats) {
     __local uint l_count[MLT_COUNTS];
     uint i = get_global_id(0), nonfinite = 0u;
     mlt_zero_counts(l_count);
@@ -20,6 +23,9 @@ __kernel void mlt_luminance(__global const Triangle* tris, __global const BvhNod
         SampleSource src = smp_chain(state, 0u, 1u, rng_key(seed, first + i, 0u), SMP_LARGE, 0u);
         EvalResult s = mlt_checked(eval_state(&sc, &frame, &src), &nonfinite);
         lum[i] = path_luminance(s.f);
+#if PATH_SPLIT > 0
+        omc[i] = (float4)(s.omc, as_float(s.pixel));
+#endif
     }
     mlt_publish_nonfinite(stats, l_count, nonfinite);
 }

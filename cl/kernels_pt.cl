@@ -7,7 +7,18 @@
  * film is in bands (src/device/memory_plan.hpp): this run covers pixels
  * first .. first + count - 1, and `accum` holds their (sum R, sum G, sum B).
  * Each work-group adds its rays and dropped non-finite samples to its row of
- * stats (PT_STAT_*; first is a multiple of the group size). */
+ * stats (PT_STAT_*; first is a multiple of the group size).
+ * Built with PT_OMC_PART, it renders only the OMC part of the split
+ * (cl/path.cl): paths stop after the PATH_SPLIT - 1 bounces that part
+ * needs. */
+
+#ifdef PT_OMC_PART
+#define PT_DEPTH(frame_depth) min((frame_depth), (uint)(PATH_SPLIT - 1))
+#define PT_VALUE(r) ((r).omc)
+#else
+#define PT_DEPTH(frame_depth) (frame_depth)
+#define PT_VALUE(r) path_radiance(&(r))
+#endif
 
 __kernel void pt_render(__global const Triangle* tris, __global const BvhNode* nodes,
                         __global const Material* mats, __global const LightEntry* lights,
@@ -21,6 +32,7 @@ __kernel void pt_render(__global const Triangle* tris, __global const BvhNode* n
     if (i < count) {
         uint pixel = first + i;
         SceneView sc = path_scene(tris, nodes, mats, lights, &frame);
+        sc.depth = PT_DEPTH(sc.depth);
         float px = (float)(pixel % frame.width), py = (float)(pixel / frame.width);
         float3 acc = vload3(i, accum);
         uint rays = 0u, nonfinite = 0u;
@@ -29,8 +41,9 @@ __kernel void pt_render(__global const Triangle* tris, __global const BvhNode* n
             float fx = (px + smp_uniform(&src, 0u, layout_film(0u))) / (float)frame.width;
             float fy = (py + smp_uniform(&src, 0u, layout_film(1u))) / (float)frame.height;
             PathResult r = path_trace(&sc, &src, camera_ray(&frame, fx, fy));
-            if (path_finite(r.radiance))
-                acc += r.radiance;
+            float3 v = PT_VALUE(r);
+            if (path_finite(v))
+                acc += v;
             else
                 ++nonfinite;
             rays += r.rays;

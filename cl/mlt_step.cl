@@ -49,12 +49,13 @@ inline MltThread mlt_thread(uint num_threads, uint proposals) {
     return th;
 }
 
-/* A non-finite F is dropped and counted in *nonfinite: it contributes
- * nothing and a chain never moves to it. */
+/* A sample with a non-finite part is dropped and counted in *nonfinite: it
+ * contributes nothing and a chain never moves to it. */
 inline EvalResult mlt_checked(EvalResult s, uint* nonfinite) {
-    if (!path_finite(s.f)) {
+    if (!path_finite(s.f) || !path_finite(s.omc)) {
         ++*nonfinite;
         s.f = (float3)(0.0f);
+        s.omc = (float3)(0.0f);
     }
     return s;
 }

@@ -3,7 +3,18 @@
  * (path_survives). Written once for every method: it reads its numbers only
  * through smp_uniform (via path_number) and does not know who provides them.
  * Bounce b owns the numbers for scattering at the b-th surface vertex, so a
- * path of depth D (D bounces at most) consumes bounces 0 .. D-1. */
+ * path of depth D (D bounces at most) consumes bounces 0 .. D-1.
+ *
+ * The split (src/render/split.hpp): each term of the estimator is light
+ * reaching the camera after L surface vertices (emission hit at bounce b:
+ * L = b; next-event estimation at bounce b: L = b + 1). Terms with
+ * L < PATH_SPLIT form the OMC part, rendered by per-pixel samples; the rest
+ * is the MLT part. PATH_SPLIT 0 puts everything in the rest. The parts are
+ * accumulated apart, so omc + rest is the path tracer's estimate. */
+
+#ifndef PATH_SPLIT
+#define PATH_SPLIT 0
+#endif
 
 typedef struct {
     const __global Triangle* tris;
@@ -15,8 +26,9 @@ typedef struct {
 } SceneView;
 
 typedef struct {
-    float3 radiance; /* F(x): the path's contribution, RGB */
-    uint rays;       /* rays traced: closest-hit and shadow */
+    float3 omc;  /* terms with L < PATH_SPLIT: the OMC part, RGB */
+    float3 rest; /* the other terms: the MLT part F(x), RGB */
+    uint rays;   /* rays traced: closest-hit and shadow */
     uint bounces;    /* surface vertices that scattered (read their bounce's numbers) */
 } PathResult;
 
@@ -118,10 +130,25 @@ inline bool path_survives(SampleSource* src, uint bounce, float3* beta) {
     return true;
 }
 
+/* Adds a term of light that reached the camera after `vertices` surface
+ * vertices to its part. */
+inline void path_add(PathResult* res, uint vertices, float3 c) {
+    if (vertices < PATH_SPLIT)
+        res->omc += c;
+    else
+        res->rest += c;
+}
+
+/* The whole estimate: both parts. */
+inline float3 path_radiance(const PathResult* r) {
+    return r->omc + r->rest;
+}
+
 /* Radiance carried to the camera along `ray` by the path that src defines. */
 PathResult path_trace(const SceneView* sc, SampleSource* src, Ray ray) {
     PathResult res;
-    res.radiance = (float3)(0.0f);
+    res.omc = (float3)(0.0f);
+    res.rest = (float3)(0.0f);
     res.rays = 0;
     res.bounces = 0;
     float3 beta = (float3)(1.0f);
@@ -139,14 +166,15 @@ PathResult path_trace(const SceneView* sc, SampleSource* src, Ray ray) {
             float w = 1.0f;
             if (prev_pdf_w > 0.0f)
                 w = light_power_heuristic(prev_pdf_w, light_pdf_w(tri, hit.t, cos_o));
-            res.radiance += beta * path_rgb(m.ke) * w;
+            path_add(&res, bounce, beta * path_rgb(m.ke) * w);
         }
         if (bounce >= sc->depth) break;
         res.bounces = bounce + 1u;
         float3 x = ray.o + ray.d * hit.t;
         float3 n_wo = cos_o >= 0.0f ? n : -n;
         if (m.type == MAT_DIFFUSE)
-            res.radiance += beta * path_next_event(sc, src, bounce, x, n_wo, &m, &res.rays);
+            path_add(&res, bounce + 1u,
+                     beta * path_next_event(sc, src, bounce, x, n_wo, &m, &res.rays));
         BsdfSample bs = path_scatter(src, bounce, &m, wo, n, n_wo);
         beta *= bs.weight;
         prev_pdf_w = bs.pdf_w;

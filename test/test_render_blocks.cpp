@@ -37,12 +37,13 @@ struct RenderCase {
     std::uint32_t pt_spp; // PT reference: pt_spp samples per pixel in pt_batches
     int pt_batches;       // batches, seed pt_seed
     std::uint64_t pt_seed;
+    Split split = Split::None; // with a split, the image is both parts
 };
 
 // What gtest prints for a failing case.
 void PrintTo(const RenderCase& c, std::ostream* os) {
-    *os << c.scene << " K=" << c.proposals << ", " << c.threads << " threads x " << c.steps
-        << " steps x " << c.replicas << " renders";
+    *os << c.scene << " K=" << c.proposals << " split " << split_name(c.split) << ", "
+        << c.threads << " threads x " << c.steps << " steps x " << c.replicas << " renders";
 }
 
 // The fixed seeds; SMALLMLT_RENDER_SEED=N adds N * 10^6 to every seed, to
@@ -133,6 +134,8 @@ TEST_P(RenderBlocks, MltMatchesPathTracingPerBlock) {
         opt.proposals = c.proposals;
         opt.large_step = 0.1f; // the default with burn-in (burn-in itself: default, 32 rounds)
         opt.seed = c.seed + seed_offset() + 1 + r;
+        opt.split = c.split;
+        opt.omc_effort = 0.05; // the rule's share would make the OMC part most of the time
         MltRenderer m(test::cl(), ds, opt);
         m.prepare();
         if (r == 0) {
@@ -147,10 +150,12 @@ TEST_P(RenderBlocks, MltMatchesPathTracingPerBlock) {
             m.step(c.steps);
         }
         Image img = m.image();
-        scale_error = std::max(scale_error, std::abs(img.mean_luminance() / m.b() - 1) /
-                                                test::film_mean_tolerance(m));
+        double chains = m.part_image(MltRenderer::Part::Mlt).mean_luminance();
+        scale_error = std::max(scale_error,
+                               std::abs(chains / m.b() - 1) / test::film_mean_tolerance(m));
         mlt.add(test::block_shares(img, c.block));
-        b.add({m.b()});
+        // Without a split the image's mean is b; with one, b plus the OMC part's.
+        b.add({c.split == Split::None ? m.b() : img.mean_luminance()});
     }
     // Each step's splat weights sum to the number of work-items, so every
     // image's mean is b up to the film's rounding (scale_error is in units
@@ -159,7 +164,8 @@ TEST_P(RenderBlocks, MltMatchesPathTracingPerBlock) {
     EXPECT_GT(errors[0], errors[1]) << "error against PT after S/4 and S/2 steps";
     EXPECT_GT(errors[1], errors[2]) << "error against PT after S/2 and S steps";
 
-    // b against PT's mean: this is the only check here of the image's scale.
+    // b (with a split, b plus the OMC part) against PT's mean: this is the
+    // only check here of the image's scale.
     test::BlockComparison bc = test::welch_compare(b, pt.mean, kAlpha);
     std::printf("%s K=%u: b %.5f +- %.2f%%, PT mean %.5f +- %.2f%%: t %+.2f, p %.3g\n", c.scene,
                 c.proposals, b.mean(0), 100 * std::sqrt(b.se2(0)) / b.mean(0), pt.mean.mean(0),
@@ -214,10 +220,14 @@ INSTANTIATE_TEST_SUITE_P(
     ::testing::Values(RenderCase{"cornell", 32, 8, 4096, 1, 128, 16, 1000, 2048, 32, 100},
                       RenderCase{"cornell", 32, 8, 4096, 4, 64, 10, 2000, 2048, 32, 100},
                       RenderCase{"cornell-water", 32, 16, 4096, 1, 48, 8, 3000, 1536, 32, 300},
-                      RenderCase{"ajar", 32, 16, 4096, 1, 48, 8, 4000, 1536, 32, 400}),
+                      RenderCase{"cornell-water", 32, 16, 4096, 1, 48, 8, 5000, 1536, 32, 300,
+                                 Split::Direct},
+                      RenderCase{"ajar", 32, 16, 4096, 1, 48, 8, 4000, 1536, 32, 400,
+                                 Split::Direct}),
     [](const ::testing::TestParamInfo<RenderCase>& info) {
-        std::string name =
-            std::string(info.param.scene) + "_K" + std::to_string(info.param.proposals);
+        std::string name = std::string(info.param.scene) + "_K" +
+                           std::to_string(info.param.proposals) + "_" +
+                           split_name(info.param.split);
         std::replace(name.begin(), name.end(), '-', '_');
         return name;
     });

@@ -116,6 +116,7 @@ int run_budget(const BudgetOptions& o) {
     DeviceBudget budget = device_budget(dev, o.device_mem);
     ChainShape shape;
     shape.proposals = o.proposals;
+    shape.omc_part = o.split != Split::None;
     if (o.threads) {
         shape.threads = *o.threads;
         check_chain_shape(shape);

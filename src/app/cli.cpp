@@ -70,6 +70,12 @@ MLT options:
                      luminance (default), or at fresh OMC samples
   --burn-in-iters T  OMC rounds of one sample per chain (default 32); all of them
                      estimate the normalization b
+  --split none|visible|direct  what the chains render: all light (none), or
+                     all but the OMC part, rendered by per-pixel samples: the
+                     emission the camera sees (visible), plus direct light at
+                     the first vertex (direct, the default)
+  --omc-effort F     F times the OMC part's share of time that the split's rule
+                     gives it (default 1; doc/design.md, "The split")
   --large-step P     probability that a mutation draws a whole new path
                      (default 0.1 with burn-in, 0.5 without)
   --stuck-run R      a chain that rejects R proposals in a row counts as stuck
@@ -83,6 +89,7 @@ MLT options:
 Budget options:
   --threads N|auto   as for render (default auto)
   --proposals K      proposals per chain: N threads keep N/K chain states (default 1)
+  --split none|visible|direct  as for render (a split adds the OMC part's film)
   --depth D          report depths 1..D (default: the scene's depth)
   --width W, --height H  the film (overrides the scene)
   --device-mem BYTES as for render
@@ -183,6 +190,14 @@ double to_positive(const std::string& flag, const std::string& v, const char* wh
     return x;
 }
 
+double to_non_negative(const std::string& flag, const std::string& v) {
+    char* end = nullptr;
+    double x = std::strtod(v.c_str(), &end);
+    if (v.empty() || *end != '\0' || !std::isfinite(x) || x < 0)
+        throw UsageError(flag + ": '" + v + "' is not a number >= 0");
+    return x;
+}
+
 double to_seconds(const std::string& flag, const std::string& v) {
     return to_positive(flag, v, "number of seconds");
 }
@@ -218,6 +233,10 @@ RenderOptions parse_render(ArgReader& r) {
                 throw UsageError("--method: '" + m + "' is not a method (pt or mlt)");
         } else if (flag == "--large-step") {
             o.large_step = float(to_unit_interval(flag, r.value(flag, arg)));
+        } else if (flag == "--split") {
+            o.split = parse_split(flag, r.value(flag, arg));
+        } else if (flag == "--omc-effort") {
+            o.omc_effort = to_non_negative(flag, r.value(flag, arg));
         } else if (flag == "--stuck-run") {
             o.stuck_run = std::uint32_t(to_int(flag, r.value(flag, arg), 1, CHAIN_RUN_MAX));
         } else if (flag == "--burn-in") {
@@ -319,6 +338,8 @@ BudgetOptions parse_budget(ArgReader& r) {
             o.threads = to_threads(flag, r.value(flag, arg));
         } else if (flag == "--proposals") {
             o.proposals = to_proposals(flag, r.value(flag, arg));
+        } else if (flag == "--split") {
+            o.split = parse_split(flag, r.value(flag, arg));
         } else if (flag == "--depth") {
             o.depth = int(to_int(flag, r.value(flag, arg), 1, kMaxDepth));
         } else if (flag == "--device-mem") {

@@ -65,6 +65,7 @@ std::uint32_t fit_to_device(const RenderOptions& o, const ClContext& cl, const D
     ChainShape shape;
     shape.proposals = o.proposals;
     shape.film_atomics64 = o.film_atomics64;
+    shape.omc_part = o.split != Split::None;
     if (o.threads) {
         shape.threads = *o.threads;
         check_chain_shape(shape);
@@ -108,6 +109,8 @@ std::unique_ptr<Integrator> make_integrator(const RenderOptions& o, const ClCont
     m.burn_in_iters = o.burn_in_iters;
     m.stuck_run = o.stuck_run;
     m.film_atomics64 = o.film_atomics64;
+    m.split = o.split;
+    m.omc_effort = o.omc_effort;
     return std::make_unique<MltRenderer>(cl, ds, m);
 }
 

@@ -32,17 +32,19 @@ bool is_chain_state(const std::string& name) {
     return name == "state" || name == "values";
 }
 
+// The bands of the film ("film band N") and of the OMC part's ("OMC film
+// band N").
 bool is_film(const std::string& name) {
-    return name.rfind("film band", 0) == 0;
+    return name.find("film band") != std::string::npos;
 }
 
 void add_film(MemoryPlan& p, std::uint64_t pixels, std::uint64_t bytes_per_pixel,
-              std::uint64_t max_alloc) {
+              std::uint64_t max_alloc, const std::string& prefix = "") {
     FilmBands split = film_bands(pixels, bytes_per_pixel, max_alloc);
     for (std::uint32_t b = 0; b < split.bands; ++b) {
         std::uint64_t first = b * split.band_pixels;
         std::uint64_t n = std::min(split.band_pixels, pixels - first);
-        p.buffers.push_back({"film band " + std::to_string(b), n * bytes_per_pixel, false});
+        p.buffers.push_back({prefix + "film band " + std::to_string(b), n * bytes_per_pixel, false});
     }
 }
 
@@ -88,8 +90,9 @@ std::uint64_t MemoryPlan::film() const {
 }
 
 std::uint32_t MemoryPlan::film_bands() const {
-    return std::uint32_t(std::count_if(buffers.begin(), buffers.end(),
-                                       [](const PlannedBuffer& b) { return is_film(b.name); }));
+    return std::uint32_t(std::count_if(buffers.begin(), buffers.end(), [](const PlannedBuffer& b) {
+        return b.name.rfind("film band", 0) == 0;
+    }));
 }
 
 FilmBands film_bands(std::uint64_t pixels, std::uint64_t bytes_per_pixel, std::uint64_t max_alloc) {
@@ -137,6 +140,14 @@ MemoryPlan plan_mlt(const DeviceScene& ds, const ChainShape& shape, std::size_t 
     p.buffers.push_back({"scan", threads * sizeof(std::uint64_t), true});
     // Several buffers; their sum counts as one entry (at least as big as each).
     p.buffers.push_back({"scan blocks", scan_bytes(threads, scan_wg, sizeof(std::uint64_t)), true});
+    if (shape.omc_part) {
+        // The OMC part's per-pixel sums and counters (src/render/path_tracer.hpp),
+        // and the OMC part and pixel of each burn-in sample (cl/kernels_mlt.cl).
+        add_film(p, pixels(ds), kPtFilmPixelBytes, max_alloc, "OMC ");
+        p.buffers.push_back(
+            {"OMC stats", group_rows(pixels(ds)) * PT_STAT_COUNT * sizeof(std::uint64_t), false});
+        p.buffers.push_back({"OMC samples", threads * 4 * sizeof(float), true});
+    }
     return p;
 }
 

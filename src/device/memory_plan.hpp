@@ -26,8 +26,8 @@ struct MemoryPlan {
     std::uint64_t largest() const;                      // the biggest single buffer
     std::uint64_t bytes(const std::string& name) const; // requested size (0 if empty)
     std::uint64_t sum(bool chain_state) const;          // chain state buffers or the rest
-    std::uint64_t film() const;                         // the film's bands
-    std::uint32_t film_bands() const;                   // how many there are
+    std::uint64_t film() const;                         // the films' bands
+    std::uint32_t film_bands() const;                   // how many the MLT (or PT) film has
 };
 
 // What a render stores per chain and how many chains it has.
@@ -36,6 +36,7 @@ struct ChainShape {
     std::uint32_t proposals = 1; // K: threads per chain
     bool float32_states = false;
     bool film_atomics64 = false; // the 64-bit reference film (MltOptions)
+    bool omc_part = false;       // a split: the OMC part's film and counters too
     std::uint32_t chains() const { return threads / proposals; }
 };
 

@@ -1,6 +1,7 @@
 #include "render/mlt.hpp"
 
 #include "base/clock.hpp"
+#include "base/color.hpp"
 #include "base/error.hpp"
 #include "base/rng.hpp"
 #include "device/scan.hpp"
@@ -9,13 +10,14 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 
 namespace smallmlt {
 
 namespace {
 
 // Seeds of the three kinds of streams of a render.
-constexpr std::uint64_t kPurposeOmc = 1, kPurposePick = 2, kPurposeStep = 3;
+constexpr std::uint64_t kPurposeOmc = 1, kPurposePick = 2, kPurposeStep = 3, kPurposePixel = 4;
 
 std::string program_defines(const ClContext& cl, const DeviceScene& ds, const MltOptions& opt) {
     std::string d = ds.layout.defines() + scan_defines(cl.device()) + "#define MLT_GROUP " +
@@ -23,11 +25,12 @@ std::string program_defines(const ClContext& cl, const DeviceScene& ds, const Ml
     if (opt.float32_states) d += "#define PSS_FLOAT32 1\n";
     if (opt.eager_stay) d += "#define MLT_EAGER_STAY 1\n";
     if (opt.film_atomics64) d += "#define FILM_ATOMICS64 1\n";
-    return d;
+    return d + split_defines(opt.split);
 }
 
 ChainShape chain_shape(const MltOptions& opt) {
-    return ChainShape{opt.threads, opt.proposals, opt.float32_states, opt.film_atomics64};
+    return ChainShape{opt.threads, opt.proposals, opt.float32_states, opt.film_atomics64,
+                      opt.split != Split::None};
 }
 
 const MltOptions& check_options(const MltOptions& opt) {
@@ -57,6 +60,39 @@ double fixed_lum(std::uint64_t v) {
 // The kernels' rng_key (cl/rng.cl).
 std::uint64_t rng_key(std::uint64_t seed, std::uint32_t a, std::uint32_t b) {
     return rng_mix64(seed + rng_mix64((std::uint64_t(a) << 32) | b));
+}
+
+// Adds burn-in samples' OMC parts (RGB, then the pixel's bits; a dropped
+// sample is 0) to their pixels' sums; returns the sum of their squared
+// luminances.
+double add_omc_samples(const std::vector<float>& samples, std::vector<double>& sums) {
+    double sum2 = 0;
+    for (std::size_t i = 0; i + 4 <= samples.size(); i += 4) {
+        std::uint32_t pixel;
+        std::memcpy(&pixel, &samples[i + 3], sizeof pixel);
+        double* at = &sums.at(3 * std::size_t(pixel));
+        for (int c = 0; c < 3; ++c)
+            at[c] += samples[i + c];
+        double y = rgb_luminance(samples[i], samples[i + 1], samples[i + 2]);
+        sum2 += y * y;
+    }
+    return sum2;
+}
+
+// V_o of src/render/split.hpp from M burn-in samples, uniform over the P
+// pixels: their OMC-part sums per pixel and channel and the sum of their
+// squared luminances. With Q = (P / M) sum f^2, an unbiased estimate of
+// sum_p E_p[f^2], and mu_p = (P / M) S_p, whose square overestimates
+// mu_p^2 by about (P / M) E_p[f^2], V_o = sum_p (E_p[f^2] - mu_p^2) is
+// about Q (1 + P / M) - sum_p mu_p^2.
+double omc_part_variance(const std::vector<double>& sums, double sum2, double samples) {
+    const double pixels = double(sums.size() / 3), per = pixels / samples;
+    double mu2 = 0;
+    for (std::size_t p = 0; p < sums.size(); p += 3) {
+        double mu = per * rgb_luminance(sums[p], sums[p + 1], sums[p + 2]);
+        mu2 += mu * mu;
+    }
+    return std::max(0.0, per * sum2 * (1 + per) - mu2);
 }
 
 } // namespace
@@ -138,6 +174,11 @@ MltRenderer::MltRenderer(const ClContext& cl, const DeviceScene& ds, const MltOp
       film_(cl, pixels(),
             plan_mlt_film(pixels(), opt.threads, max_alloc(cl, opt), opt.film_atomics64,
                           opt.film_pass_mutations)) {
+    if (opt.split != Split::None) {
+        omc_ = std::make_unique<PathTracer>(cl, ds, derive_seed(opt.seed, kPurposePixel),
+                                            OmcPart{opt.split, &scene_}, max_alloc(cl, opt));
+        burn_in_omc_.assign(3 * pixels(), 0.0);
+    }
     state_.fill_zero(cl);
     stats_.fill_zero(cl);
     picks_.fill_zero(cl);
@@ -146,23 +187,30 @@ MltRenderer::MltRenderer(const ClContext& cl, const DeviceScene& ds, const MltOp
 void MltRenderer::sample_starts() {
     const std::uint32_t m = opt_.threads, iters = std::max(1u, opt_.burn_in_iters);
     const std::uint32_t chains = this->chains();
+    const bool split = opt_.split != Split::None;
     ClBuffer lum(cl_, CL_MEM_READ_WRITE, plan_.bytes("luminance"));
     ClBuffer scan(cl_, CL_MEM_READ_WRITE, plan_.bytes("scan"));
+    ClBuffer omc = split ? ClBuffer(cl_, CL_MEM_READ_WRITE, plan_.bytes("OMC samples"))
+                         : ClBuffer();
     BurnInPicker picker(cl_, program_.p, m);
-    std::vector<float> host(m);
+    std::vector<float> host(m), host_omc(split ? 4 * m : 0);
     std::uint64_t sum = 0;
-    double sum2 = 0;
+    double sum2 = 0, omc_sum2 = 0;
     cl_ulong omc_seed = derive_seed(opt_.seed, kPurposeOmc);
     cl_ulong pick_seed = derive_seed(opt_.seed, kPurposePick);
     for (std::uint32_t it = 0; it < iters; ++it) {
         k_lum_.set_args(scene_.tris, scene_.nodes, scene_.mats, scene_.lights, ds_.frame, state_,
                         cl_ulong(omc_round_seed(omc_seed, it)), cl_uint(0), cl_uint(m), lum,
-                        stats_);
+                        split ? omc : lum, stats_);
         k_lum_.run(cl_, m);
         lum.read(cl_, host.data());
         for (float y : host) {
             sum += b_sample_fixed(y);
             sum2 += double(y) * y;
+        }
+        if (split) {
+            omc.read(cl_, host_omc.data());
+            omc_sum2 += add_omc_samples(host_omc, burn_in_omc_);
         }
         if (opt_.burn_in) picker.add_round(lum, host, m, scan, pick_seed, chains, picks_);
     }
@@ -178,6 +226,7 @@ void MltRenderer::sample_starts() {
     burn_in_sum2_ = sum2;
     burn_in_samples_ = std::uint64_t(m) * iters;
     burn_in_variance_ = n > 1 ? std::max(0.0, (sum2 / n - mean * mean) * n / (n - 1)) : 0;
+    if (split) omc_variance_ = omc_part_variance(burn_in_omc_, omc_sum2, n);
 }
 
 std::uint64_t b_sample_fixed(float lum) {
@@ -238,20 +287,61 @@ void MltRenderer::step(std::uint32_t n) {
     Clock::time_point t0 = Clock::now();
     for (std::uint32_t i = 0; i < n; ++i) {
         cl_uint iteration = ++iterations_;
-        k_step_.set_args(scene_.tris, scene_.nodes, scene_.mats, scene_.lights, ds_.frame, state_,
-                         values_, cl_uint(opt_.threads), cl_uint(opt_.proposals), seed, iteration,
-                         threshold, film_.band(0), film_.band(1), film_.band(2), film_.band(3),
-                         film_.plan().shape, stats_, cl_uint(opt_.stuck_run));
-        k_step_.enqueue(cl_, opt_.threads);
-        // The pass ends: every chain splats what it owes, and the film's
-        // words go to the host before the next pass could overflow them.
-        if (drain_every && iteration % drain_every == 0) {
-            owed(kOwedFlush);
-            film_.drain();
+        if (burn_in_fixed_ > 0) {
+            k_step_.set_args(scene_.tris, scene_.nodes, scene_.mats, scene_.lights, ds_.frame,
+                             state_, values_, cl_uint(opt_.threads), cl_uint(opt_.proposals), seed,
+                             iteration, threshold, film_.band(0), film_.band(1), film_.band(2),
+                             film_.band(3), film_.plan().shape, stats_, cl_uint(opt_.stuck_run));
+            k_step_.enqueue(cl_, opt_.threads);
+            // The pass ends: every chain splats what it owes, and the film's
+            // words go to the host before the next pass could overflow them.
+            if (drain_every && iteration % drain_every == 0) {
+                owed(kOwedFlush);
+                film_.drain();
+            }
         }
+        if (omc_) omc_after_step();
     }
     cl_.finish("kernel mlt_step over " + std::to_string(opt_.threads) + " threads");
     step_seconds_ += seconds_since(t0);
+}
+
+void MltRenderer::choose_omc_rate() {
+    SplitCosts c;
+    c.omc_variance = omc_variance_;
+    c.b = mlt_b(burn_in_fixed_, burn_in_samples_);
+    c.pixels = double(pixels());
+    c.threads = double(opt_.threads);
+    // One OMC-part sample per pixel measures its rays (and is kept).
+    omc_->add_samples(1);
+    c.omc_rays = double(omc_->rays()) / c.pixels;
+    c.mutation_rays = double(stats().rays) / c.threads;
+    omc_rate_ = omc_samples_per_step(c, opt_.omc_effort);
+}
+
+void MltRenderer::omc_after_step() {
+    if (burn_in_fixed_ == 0) {
+        // No path of the burn-in had light in the MLT part: the chains have
+        // nothing to render, and a step's time goes to one OMC sample.
+        omc_->add_samples(1);
+        return;
+    }
+    if (omc_rate_ == 0 && omc_->spp() == 0) {
+        choose_omc_rate();
+        omc_owed_ = std::max(0.0, omc_rate_ - 1);
+    } else {
+        omc_owed_ += omc_rate_;
+    }
+    std::uint32_t k = std::uint32_t(std::min(omc_owed_, 4096.0));
+    if (k == 0) return;
+    omc_->add_samples(k);
+    omc_owed_ -= k;
+}
+
+bool MltRenderer::finished() const {
+    if (!prepared_ || burn_in_fixed_ > 0) return false;
+    return !omc_ || std::none_of(burn_in_omc_.begin(), burn_in_omc_.end(),
+                                 [](double v) { return v > 0; });
 }
 
 std::uint32_t MltRenderer::state_bytes_per_chain() const {
@@ -286,7 +376,7 @@ std::vector<std::string> MltRenderer::notes() const {
         out.push_back(
             std::to_string(n) +
             " samples had a NaN or infinite radiance and were dropped (counted as black)");
-    if (prepared_ && burn_in_fixed_ == 0)
+    if (finished())
         out.push_back("no OMC sample of " +
                       std::to_string(std::uint64_t(opt_.threads) * opt_.burn_in_iters) +
                       " carried light (b = 0): the image is black; is the scene lit?");
@@ -334,7 +424,15 @@ std::string MltRenderer::summary(double) const {
                   s.mutations ? double(s.atomics) / double(s.mutations) : 0.0, be.b,
                   100.0 * be.rel_error, static_cast<unsigned long long>(s.nonfinite), s.longest_run,
                   static_cast<unsigned long long>(s.stuck), opt_.stuck_run);
-    return buf;
+    std::string out = buf;
+    if (omc_) {
+        std::snprintf(buf, sizeof buf,
+                      "; split %s: OMC part %u spp + %.1f from burn-in (%.3g spp per step)",
+                      split_name(opt_.split), omc_->spp(),
+                      double(burn_in_samples_) / double(pixels()), omc_rate_);
+        out += buf;
+    }
+    return out;
 }
 
 std::uint64_t MltRenderer::units_for_spp(std::uint32_t spp, int rank, int ranks) const {
@@ -357,19 +455,42 @@ Tally MltRenderer::tally() const {
     t.ints.insert(t.ints.end(),
                   {s.mutations, burn_in_fixed_, burn_in_samples_, s.large_lum, s.large});
     t.reals = {burn_in_sum2_};
+    if (omc_) {
+        Tally o = omc_->tally(); // sums per pixel and channel, then spp
+        t.ints.push_back(o.ints.at(0));
+        t.reals.insert(t.reals.end(), o.reals.begin(), o.reals.end());
+        t.reals.insert(t.reals.end(), burn_in_omc_.begin(), burn_in_omc_.end());
+    }
     return t;
 }
 
 Image MltRenderer::image_from(const Tally& summed) const {
+    return image_of(summed, true, true);
+}
+
+Image MltRenderer::part_image(Part part) const {
+    return image_of(tally(), part == Part::Mlt, part == Part::Omc);
+}
+
+Image MltRenderer::image_of(const Tally& summed, bool mlt, bool omc) const {
     Image img(int(ds_.frame.width), int(ds_.frame.height));
     const std::size_t n = 3 * pixels();
     const std::uint64_t* counts = summed.ints.data() + n;
     double mutations = double(counts[0]);
-    if (mutations == 0) return img;
-    double b = mlt_b(counts[1] + counts[3], counts[2] + counts[4]);
-    double scale = b * double(pixels()) / mutations / double(1u << FILM64_FRAC_BITS);
-    for (std::size_t i = 0; i < n; ++i)
-        img.rgb[i] = float(double(summed.ints[i]) * scale);
+    if (mlt && mutations > 0) {
+        double b = mlt_b(counts[1] + counts[3], counts[2] + counts[4]);
+        double scale = b * double(pixels()) / mutations / double(1u << FILM64_FRAC_BITS);
+        for (std::size_t i = 0; i < n; ++i)
+            img.rgb[i] = float(double(summed.ints[i]) * scale);
+    }
+    if (omc && omc_) {
+        // Per-pixel samples and the burn-in's, M / P expected per pixel.
+        double spp = double(counts[5]) + double(counts[2]) / double(pixels());
+        const double *pt = summed.reals.data() + 1, *burn = pt + n;
+        if (spp > 0)
+            for (std::size_t i = 0; i < n; ++i)
+                img.rgb[i] += float((pt[i] + burn[i]) / spp);
+    }
     return img;
 }
 

@@ -9,9 +9,12 @@
 #include "image/image.hpp"
 #include "render/integrator.hpp"
 #include "render/mlt_film.hpp"
+#include "render/path_tracer.hpp"
+#include "render/split.hpp"
 #include "scene/device_scene.hpp"
 
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -43,6 +46,11 @@ struct MltOptions {
     // A chain that rejects this many proposals in a row counts as stuck
     // (reported, not acted on; doc/stability.md).
     std::uint32_t stuck_run = kDefaultStuckRun;
+    // What the chains render (src/render/split.hpp): with a split, the OMC
+    // part is rendered by per-pixel samples beside them, omc_effort times
+    // the time the rule of split.hpp gives it, and by the burn-in's paths.
+    Split split = Split::None;
+    double omc_effort = 1.0;
     // The file that defines eval_state: cl/eval_path.cl renders the scene;
     // the sampler tests use cl/eval_target.cl, a known target (2D, or with
     // bounces on a layout that has bounce slots).
@@ -140,8 +148,8 @@ class MltRenderer : public Integrator {
     }
     std::string summary(double seconds) const override;
     // No OMC sample of burn-in carried light: the image is black whatever the
-    // chains do.
-    bool finished() const override { return prepared_ && burn_in_fixed_ == 0; }
+    // chains do (and, with a split, the OMC part had none either).
+    bool finished() const override;
     std::vector<std::string> notes() const override;
 
     // Runs the OMC samples of burn-in: the first estimate of b, and the
@@ -170,8 +178,19 @@ class MltRenderer : public Integrator {
     // (MLT_B_FRAC_BITS fixed point) and sample count, the large steps' sum
     // and count; reals: the burn-in's sum of squared luminances.
     Tally tally() const override;
-    // b * splats * pixels / mutations, b from the summed samples.
+    // b * splats * pixels / mutations, b from the summed samples, plus the
+    // OMC part of a split: per pixel, the sum of its per-pixel samples and
+    // of the burn-in's splats over spp + M / P (M burn-in samples, uniform
+    // over the P pixels: M / P of them are expected in each).
     Image image_from(const Tally& summed) const override;
+    // One part of the image: the chains' (MLT) or the OMC part (black
+    // without a split).
+    enum class Part { Mlt, Omc };
+    Image part_image(Part part) const;
+    // The OMC part's per-pixel samples per MLT step (split.hpp's rule), once
+    // the first step has measured a mutation's rays; 0 before.
+    double omc_rate() const { return omc_rate_; }
+    std::uint32_t omc_spp() const { return omc_ ? omc_->spp() : 0; }
     const MltFilm& film() const { return film_; }
 
     // For tests: the raw buffers.
@@ -190,6 +209,15 @@ class MltRenderer : public Integrator {
     SceneBuffers scene_;
     ClBuffer state_, values_, stats_, picks_;
     MltFilm film_;
+    std::unique_ptr<PathTracer> omc_; // the OMC part's per-pixel samples (a split)
+    std::vector<double> burn_in_omc_; // the burn-in's OMC part, summed per pixel and channel
+    double omc_variance_ = 0;         // V_o of split.hpp, from the burn-in
+    double omc_rate_ = 0, omc_owed_ = 0;
+    std::uint64_t step_rays_ = 0; // rays of the first step (a mutation's cost)
+    // Runs the OMC part's samples owed after a step.
+    void omc_after_step();
+    void choose_omc_rate();
+    Image image_of(const Tally& summed, bool mlt, bool omc) const;
     // Runs mlt_owed in `mode` (MLT_OWED_* of cl/kernels_mlt.cl).
     void owed(std::uint32_t mode) const;
     struct BEstimate {

@@ -27,17 +27,35 @@ PathTracer::PathTracer(const ClContext& cl, const DeviceScene& ds, std::uint64_t
                        std::uint32_t sample_offset, std::uint32_t sample_stride)
     : cl_(cl), ds_(ds), seed_(seed), plan_(plan_pt(ds, max_alloc(cl, max_alloc_bytes))),
       program_(cl.build(pt_program_files(sampler), ds.layout.defines())),
-      kernel_(program_.p, "pt_render"), scene_(cl, ds),
+      kernel_(program_.p, "pt_render"), own_scene_(std::in_place, cl, ds), scene_(*own_scene_),
       stats_(cl, CL_MEM_READ_WRITE, plan_.bytes("stats")),
       band_pixels_(
           film_bands(pixels(), kPtFilmPixelBytes, max_alloc(cl, max_alloc_bytes)).band_pixels),
       sample_offset_(sample_offset), sample_stride_(sample_stride) {
+    allocate_film();
+}
+
+PathTracer::PathTracer(const ClContext& cl, const DeviceScene& ds, std::uint64_t seed,
+                       const OmcPart& part, std::uint64_t max_alloc_bytes)
+    : cl_(cl), ds_(ds), seed_(seed), plan_(plan_pt(ds, max_alloc(cl, max_alloc_bytes))),
+      program_(cl.build(pt_program_files(PtSampler::Sobol),
+                        ds.layout.defines() + split_defines(part.split) +
+                            "#define PT_OMC_PART 1\n")),
+      kernel_(program_.p, "pt_render"), scene_(*part.scene),
+      stats_(cl, CL_MEM_READ_WRITE, plan_.bytes("stats")),
+      band_pixels_(
+          film_bands(pixels(), kPtFilmPixelBytes, max_alloc(cl, max_alloc_bytes)).band_pixels),
+      sample_offset_(0), sample_stride_(1) {
+    allocate_film();
+}
+
+void PathTracer::allocate_film() {
     for (std::uint64_t first = 0; first < pixels(); first += band_pixels_) {
-        bands_.emplace_back(cl, CL_MEM_READ_WRITE,
+        bands_.emplace_back(cl_, CL_MEM_READ_WRITE,
                             std::min(band_pixels_, pixels() - first) * kPtFilmPixelBytes);
-        bands_.back().fill_zero(cl);
+        bands_.back().fill_zero(cl_);
     }
-    stats_.fill_zero(cl);
+    stats_.fill_zero(cl_);
 }
 
 void PathTracer::add_samples(std::uint32_t n) {

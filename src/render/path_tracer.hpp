@@ -6,10 +6,12 @@
 #include "device/scene_buffers.hpp"
 #include "image/image.hpp"
 #include "render/integrator.hpp"
+#include "render/split.hpp"
 #include "scene/device_scene.hpp"
 
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <vector>
 
 namespace smallmlt {
@@ -22,6 +24,13 @@ enum class PtSampler { Sobol, Random };
 // Kernel files of the path-tracing program, in build order.
 std::vector<std::string> pt_program_files(PtSampler sampler);
 
+// Stratified per-pixel samples of the OMC part of a split (cl/path.cl), on
+// the scene buffers of the MLT render it belongs to.
+struct OmcPart {
+    Split split = Split::Direct;
+    const SceneBuffers* scene = nullptr;
+};
+
 class PathTracer : public Integrator {
   public:
     // The film's bands fit max_alloc_bytes (0: the device's largest
@@ -30,6 +39,9 @@ class PathTracer : public Integrator {
     PathTracer(const ClContext& cl, const DeviceScene& ds, std::uint64_t seed,
                PtSampler sampler = PtSampler::Sobol, std::uint64_t max_alloc_bytes = 0,
                std::uint32_t sample_offset = 0, std::uint32_t sample_stride = 1);
+    // Renders only the OMC part of part.split (Sobol samples).
+    PathTracer(const ClContext& cl, const DeviceScene& ds, std::uint64_t seed, const OmcPart& part,
+               std::uint64_t max_alloc_bytes);
 
     void advance(std::uint32_t units) override { add_samples(units); }
     std::uint64_t units_for_spp(std::uint32_t spp, int rank, int ranks) const override;
@@ -57,13 +69,15 @@ class PathTracer : public Integrator {
     MemoryPlan plan_; // sizes of the buffers below (src/memory_plan.cpp)
     ClProgram program_;
     ClKernel kernel_;
-    SceneBuffers scene_;
+    std::optional<SceneBuffers> own_scene_; // unless the OMC part shares its render's
+    const SceneBuffers& scene_;
     std::vector<ClBuffer> bands_; // the film: sums of R, G, B per pixel
     ClBuffer stats_;              // PT_STAT_COUNT per work-group
     std::uint64_t band_pixels_;
     std::uint32_t sample_offset_, sample_stride_;
     // Sums of the rows of stats.
     std::uint64_t stat(int which) const;
+    void allocate_film();
 };
 
 } // namespace smallmlt

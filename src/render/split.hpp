@@ -1,0 +1,55 @@
+// The split of each path's contribution between an OMC part and an MLT part
+// (cl/path.cl): light that reaches the camera after fewer than L surface
+// vertices is the OMC part, rendered by stratified per-pixel samples (what
+// path tracing renders well: the emission the camera sees, direct light);
+// the rest is the target of the Markov chains. The parts add up to the path
+// tracer's estimate, path by path.
+#pragma once
+#include "scene/device_scene.hpp"
+
+#include <cstdint>
+#include <string>
+
+namespace smallmlt {
+
+enum class Split {
+    None,    // everything to the chains (the paper's estimator)
+    Visible, // OMC: emission seen directly by the camera (L < 1)
+    Direct,  // OMC: that plus direct light at the first vertex, NEE and BSDF hits, MIS (L < 2)
+};
+
+// Chosen by the error-against-time bench (doc/RESULTS.md).
+constexpr Split kDefaultSplit = Split::Direct;
+
+const char* split_name(Split s);
+// Throws UsageError naming `flag` for an unknown name.
+Split parse_split(const std::string& flag, const std::string& name);
+// L: terms after fewer vertices are the OMC part (PATH_SPLIT of cl/path.cl).
+std::uint32_t split_vertices(Split s);
+std::string split_defines(Split s);
+
+// How the render time is divided between the parts. With t_o and t_m the
+// times of the OMC part and of the chains, the image's squared error
+// (summed over pixels) is about A / t_o + C / t_m, least when
+// t_o / t_m = sqrt(A / C):
+//   A = V_o P c_o: V_o the per-pixel variances of one OMC-part sample, summed
+//       over the P pixels; c_o the rays of one such sample;
+//   C = tau b^2 P^2 c_m: what the chains' film would have were its samples
+//       independent (pixel p is found by a fraction mu_p / (b P) of them), tau
+//       the chains' correlation (samples per independent one); c_m the rays
+//       of one mutation.
+// The OMC part then takes n_o = (t_o / t_m) T c_m / (P c_o) samples per
+// pixel per step of T threads. tau is measured (doc/RESULTS.md, "Split").
+struct SplitCosts {
+    double omc_variance = 0;   // V_o
+    double b = 0;              // the MLT part's mean luminance
+    double pixels = 0;         // P
+    double omc_rays = 0;       // c_o
+    double mutation_rays = 0;  // c_m
+    double threads = 0;        // T
+};
+constexpr double kChainCorrelation = 8.0; // tau
+// n_o, times `effort` (--omc-effort; 1 is the rule).
+double omc_samples_per_step(const SplitCosts& c, double effort);
+
+} // namespace smallmlt

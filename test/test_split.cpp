@@ -1,0 +1,127 @@
+// The split of each path between an OMC part and an MLT part
+// (src/render/split.hpp): the parts add up to the path tracer's estimate,
+// path by path and in the furnace's closed form, and the rule that divides
+// the time between them.
+#include "render/mlt.hpp"
+#include "base/error.hpp"
+#include "render/split.hpp"
+#include "test_support.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+using namespace smallmlt;
+
+namespace {
+
+struct Parts {
+    std::vector<cl_float4> omc, rest;
+};
+
+// The parts of n OMC paths (keys rng_key(seed, i, 0)) under split s.
+Parts trace_parts(const DeviceScene& ds, Split s, std::uint32_t n, std::uint64_t seed) {
+    std::vector<std::string> files = pt_program_files(PtSampler::Random);
+    files.push_back("cl/kernels_probe_split.cl");
+    ClProgram program(test::cl().build(files, ds.layout.defines() + split_defines(s)));
+    ClKernel k(program.p, "probe_split");
+    SceneBuffers scene(test::cl(), ds);
+    ClBuffer omc(test::cl(), CL_MEM_WRITE_ONLY, n * sizeof(cl_float4));
+    ClBuffer rest(test::cl(), CL_MEM_WRITE_ONLY, n * sizeof(cl_float4));
+    k.set_args(scene.tris, scene.nodes, scene.mats, scene.lights, ds.frame, cl_ulong(seed),
+               cl_uint(n), omc, rest);
+    k.run(test::cl(), n);
+    Parts p{std::vector<cl_float4>(n), std::vector<cl_float4>(n)};
+    omc.read(test::cl(), p.omc.data());
+    rest.read(test::cl(), p.rest.data());
+    return p;
+}
+
+} // namespace
+
+TEST(Split, NamesAndVertices) {
+    EXPECT_EQ(parse_split("--split", "direct"), Split::Direct);
+    EXPECT_EQ(split_vertices(parse_split("--split", "visible")), 1u);
+    EXPECT_EQ(split_vertices(Split::None), 0u);
+    EXPECT_THROW(parse_split("--split", "indirect"), UsageError);
+}
+
+// Every path, traced from the same numbers under each split: the parts add
+// up to the unsplit path's contribution (to float rounding: the terms are
+// summed in two accumulators), the path is the same (its ray count), and
+// each split moves light into the OMC part wherever the camera sees some.
+// Scenes: a dielectric seen directly (cornell-water), light through a gap,
+// the lamp itself out of sight (ajar).
+TEST(Split, PartsAddUpToThePathTracerPathByPath) {
+    const std::uint32_t n = 16384;
+    for (const char* name : {"cornell-water", "ajar"}) {
+        DeviceScene ds = prepare_scene(test::scene(name, 32, 32));
+        Parts whole = trace_parts(ds, Split::None, n, 77);
+        for (Split s : {Split::Visible, Split::Direct}) {
+            Parts p = trace_parts(ds, s, n, 77);
+            std::uint32_t omc_paths = 0, rest_paths = 0;
+            for (std::uint32_t i = 0; i < n; ++i) {
+                EXPECT_EQ(whole.omc[i].s[0], 0.0f);
+                ASSERT_EQ(p.omc[i].s[3], whole.omc[i].s[3]) << name << ": path " << i;
+                for (int c = 0; c < 3; ++c) {
+                    float sum = p.omc[i].s[c] + p.rest[i].s[c], want = whole.rest[i].s[c];
+                    ASSERT_NEAR(sum, want, 1e-5f * std::max(1.0f, want))
+                        << name << " split " << split_name(s) << ": path " << i;
+                }
+                omc_paths += p.omc[i].s[1] > 0;
+                rest_paths += p.rest[i].s[1] > 0;
+            }
+            if (s == Split::Visible && std::string(name) == "ajar")
+                EXPECT_EQ(omc_paths, 0u) << "ajar's lamp is out of the camera's sight";
+            else
+                EXPECT_GT(omc_paths, n / 200) << name << " " << split_name(s);
+            EXPECT_GT(rest_paths, n / 100) << name << " " << split_name(s);
+        }
+    }
+}
+
+namespace {
+
+// The furnace: Kd 0.5 and Ke 1 on every face of a closed box, so light
+// reaching the camera after L vertices is 0.5^L; the OMC part of a split of
+// L vertices is sum_{i<L} 0.5^i and the chains' b the rest up to the depth.
+double furnace_sum(int from, int to) {
+    double s = 0;
+    for (int i = from; i <= to; ++i)
+        s += std::pow(0.5, i);
+    return s;
+}
+
+} // namespace
+
+// Each part of the furnace at depth 4 against its closed form: b (the MLT
+// part's mean) within 4 standard errors plus 0.2%, the OMC part's image
+// mean (per-pixel samples and the burn-in's) within 0.3%, the chains'
+// image mean equal to b (the film's rounding), and so the whole image.
+TEST(Split, FurnacePartsAreTheClosedForm) {
+    const int depth = 4;
+    DeviceScene ds = prepare_scene(test::scene("furnace", 16, 16, depth));
+    for (Split s : {Split::Visible, Split::Direct}) {
+        MltOptions opt;
+        opt.threads = 4096;
+        opt.burn_in_iters = 8;
+        opt.seed = 9;
+        opt.split = s;
+        opt.omc_effort = 0.1;
+        MltRenderer mlt(test::cl(), ds, opt);
+        mlt.prepare();
+        mlt.step(8);
+        int l = int(split_vertices(s));
+        double want_b = furnace_sum(l, depth), want_omc = furnace_sum(0, l - 1);
+        double b = mlt.b(), omc = mlt.part_image(MltRenderer::Part::Omc).mean_luminance();
+        double chains = mlt.part_image(MltRenderer::Part::Mlt).mean_luminance();
+        std::printf("furnace depth %d, split %s: b %.5f (+-%.3f%%) vs %.5f; OMC part %.5f vs "
+                    "%.5f (%u spp + burn-in)\n",
+                    depth, split_name(s), b, 100 * mlt.b_rel_error(), want_b, omc, want_omc,
+                    mlt.omc_spp());
+        EXPECT_NEAR(b, want_b, (4 * mlt.b_rel_error() + 0.002) * want_b) << split_name(s);
+        EXPECT_NEAR(omc, want_omc, 0.003 * want_omc) << split_name(s);
+        EXPECT_NEAR(chains, b, test::film_mean_tolerance(mlt) * b) << split_name(s);
+        EXPECT_GT(mlt.omc_spp(), 0u) << split_name(s);
+    }
+}
