@@ -1,10 +1,12 @@
 #!/bin/sh
 # Error against time for every method on the scenes where they differ: one
 # render per (scene, method, seed) with a convergence log (render --log;
-# MSE on linear RGB against a long PT reference, measuring not counted as
-# render time). Charts one seed's curves per scene (log-log) and prints, for
-# each method, the time it needs to reach PT's final error, as a ratio of
-# PT's time (medians over the seeds; bench/time_to_error.awk).
+# MSE, relative MSE, MSE without the directly visible lights (mse_unlit, by
+# the reference's mask) and MSE of 8x8 block means on linear RGB against a
+# long PT reference, measuring not counted as render time). Charts one
+# seed's MSE curves per scene (log-log) and prints, for each method and
+# metric, the time it needs to reach PT's final error, as a ratio of PT's
+# time (medians over the seeds; bench/time_to_error.awk).
 # Writes bench/results/error_time/. Usage: bench/error_time.sh [BIN]
 # Settings (environment): SCENES, SIZE, SECONDS, SEEDS, LOG_EVERY, THREADS;
 # PLOT_ONLY=1 redraws the charts and the table from the last run's CSVs.
@@ -32,11 +34,11 @@ flags() {
 METHODS="pt mlt-none mlt mlt-k2 mlt-k4"
 
 echo "device: $("$BIN" devices | sed -n '1p'), cores: $(nproc)" | tee "$OUT/machine.txt"
-echo "scene,method,ratio_to_pt,seconds,pt_seconds,target_mse,reached" > "$OUT/time_to_error.csv"
+echo "scene,method,mse_ratio,rel_mse_ratio,mse_unlit_ratio,block8_mse_ratio,pt_seconds,target_mse" > "$OUT/time_to_error.csv"
 for scene in $SCENES; do
     ref=$(sh bench/reference.sh "$BIN" "$scene" "$SIZE")
     csv="$OUT/$scene.csv"
-    [ -n "${PLOT_ONLY:-}" ] || echo "method,seed,seconds,samples_per_pixel,samples,mse,rel_mse" > "$csv"
+    [ -n "${PLOT_ONLY:-}" ] || echo "method,seed,seconds,samples_per_pixel,samples,mse,rel_mse,mse_unlit,block8_mse" > "$csv"
     run_seeds=$SEEDS
     [ -z "${PLOT_ONLY:-}" ] || run_seeds=""
     for seed in $run_seeds; do
@@ -44,7 +46,7 @@ for scene in $SCENES; do
             # shellcheck disable=SC2046
             "$BIN" render "scenes/$scene.scene" $(flags "$m") --width "$SIZE" --height "$SIZE" \
                 --time "$SECONDS_" --seed "$seed" --quiet --reference "$ref" \
-                --log "$OUT/log.csv" --log-every "$LOG_EVERY" --out "$OUT/$scene-$m-s$seed.png"
+                --reference-mask "${ref%.pfm}-mask.pfm" --log "$OUT/log.csv" --log-every "$LOG_EVERY" --out "$OUT/$scene-$m-s$seed.png"
             tail -n +2 "$OUT/log.csv" | sed "s/^/$m,$seed,/" >> "$csv"
         done
     done
@@ -58,6 +60,7 @@ for scene in $SCENES; do
     awk -F, -v scene="$scene" -f bench/median.awk -f bench/time_to_error.awk "$csv" >> "$OUT/time_to_error.csv"
 done
 echo
-echo "time to reach the error every PT render reached at $SECONDS_ s, ${SIZE}x$SIZE, medians over seeds ($SEEDS);"
-echo "ratio < 1: faster than PT; * = not reached, extrapolated as MSE ~ 1/t from the last row"
+echo "time to reach the error every PT render reached at $SECONDS_ s, by each metric, ${SIZE}x$SIZE,"
+echo "as a ratio of PT's time, medians over seeds ($SEEDS); pt_seconds and target_mse: by MSE;"
+echo "ratio < 1: faster than PT; * = not reached, extrapolated as error ~ 1/t from the last row"
 column -s, -t "$OUT/time_to_error.csv"

@@ -20,9 +20,9 @@ OUT=${RESULTS:-bench/results}/stuck
 mkdir -p "$OUT"
 ref=$(sh bench/reference.sh "$BIN" "$SCENE" "$SIZE")
 csv="$OUT/error.csv"
-echo "method,seed,seconds,samples_per_pixel,samples,mse,rel_mse" > "$csv"
+echo "method,seed,seconds,samples_per_pixel,samples,mse,rel_mse,mse_unlit,block8_mse" > "$csv"
 echo "large_step,seed,chains,steps,stuck_chains,longest_run" > "$OUT/stuck.csv"
-common="scenes/$SCENE.scene --width $SIZE --height $SIZE --time $SECONDS_ --reference $ref"
+common="scenes/$SCENE.scene --width $SIZE --height $SIZE --time $SECONDS_ --reference $ref --reference-mask ${ref%.pfm}-mask.pfm"
 for seed in $SEEDS; do
     "$BIN" render $common --method pt --seed "$seed" --quiet --log "$OUT/log.csv" \
         --log-every "$LOG_EVERY" --out "$OUT/pt-s$seed.png"
@@ -46,7 +46,7 @@ for p in $LARGE_STEPS; do set -- "$@" "mlt-p$p=MLT, large step $p"; done
 sh bench/plot_error.sh "$OUT/error-seed$first.csv" "$OUT/error.png" \
     "$SCENE ${SIZE}x$SIZE, $THREADS MLT threads, seed $first" "$@"
 awk -F, -v scene="$SCENE" -f bench/median.awk -f bench/time_to_error.awk "$csv" > "$OUT/time_to_error.csv"
-echo "time to reach PT's error at $SECONDS_ s (ratio < 1: faster than PT; medians over seeds $SEEDS):"
+echo "time to reach PT's error at $SECONDS_ s by each metric (ratio < 1: faster than PT; medians over seeds $SEEDS):"
 column -s, -t "$OUT/time_to_error.csv"
 echo "stuck chains (a run of rejections of the default length or more) at the end of each render:"
 column -s, -t "$OUT/stuck.csv"

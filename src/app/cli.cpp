@@ -18,8 +18,12 @@ const char* usage_text() {
 Usage:
   smallmlt render SCENE [options]   render a .scene file
   smallmlt budget SCENE [options]   device memory per bounce depth, without rendering
-  smallmlt compare IMAGE REFERENCE  error of IMAGE against REFERENCE (.pfm or .exr):
-                                    MSE and relative MSE on linear values
+  smallmlt compare IMAGE REFERENCE [--mask FILE]
+                                    error of IMAGE against REFERENCE (.pfm or .exr):
+                                    MSE, relative MSE and the MSE of 8x8 block means
+                                    (block8_mse) on linear values; with --mask, also
+                                    the MSE over the pixels where FILE is black
+                                    (mse_unlit)
   smallmlt devices                  list OpenCL devices and their memory
   smallmlt --help | --version
 
@@ -45,10 +49,15 @@ Render options:
                      --rr-cap 0.95
   --quiet            no progress bar and no summary line
   --reference FILE   long render (.pfm or .exr, same film) to measure the error
-                     against: MSE and relative MSE as `compare`, printed at the end
+                     against: the errors of `compare`, printed at the end
   --log FILE.csv     with --reference: a row every --log-every seconds of render
                      time (default 1) with seconds, samples (or mutations) per
-                     pixel, samples, mse, rel_mse; measuring is not render time
+                     pixel, samples, mse, rel_mse, mse_unlit, block8_mse;
+                     measuring is not render time
+  --reference-mask FILE  with --reference: an image of the film (.pfm or .exr)
+                     whose lit pixels mse_unlit leaves out, e.g. a --depth 0
+                     render (the lights seen directly); without it mse_unlit is
+                     an empty field
 
   --device-mem BYTES use at most this much device memory, as if the device had
                      only BYTES (suffixes K, M, G); its largest buffer is BYTES/4
@@ -282,6 +291,11 @@ RenderOptions parse_render(ArgReader& r) {
             o.log = r.value(flag, arg);
         } else if (flag == "--log-every") {
             o.log_interval_s = to_seconds(flag, r.value(flag, arg));
+        } else if (flag == "--reference-mask") {
+            o.reference_mask = r.value(flag, arg);
+            if (image_format_of(o.reference_mask, flag) == ImageFormat::Png)
+                throw UsageError("--reference-mask " + o.reference_mask +
+                                 ": a mask holds linear radiance (.pfm or .exr)");
         } else if (flag == "--width") {
             o.width = int(to_int(flag, r.value(flag, arg), 1, kMaxFilmSide));
         } else if (flag == "--height") {
@@ -324,6 +338,9 @@ RenderOptions parse_render(ArgReader& r) {
     if (o.outs.empty()) o.outs.push_back(default_out(o.scene));
     if (!o.log.empty() && o.reference.empty())
         throw UsageError("--log " + o.log + ": give --reference, the image to measure against");
+    if (!o.reference_mask.empty() && o.reference.empty())
+        throw UsageError("--reference-mask " + o.reference_mask +
+                         ": give --reference, the image to measure against");
     if (!o.large_step)
         o.large_step = o.burn_in ? kDefaultLargeStepBurnIn : kDefaultLargeStepNoBurnIn;
     return o;
@@ -391,11 +408,21 @@ Command parse_command_line(int argc, const char* const* argv) {
         c.budget = parse_budget(r);
     } else if (cmd == "compare") {
         c.kind = CommandKind::Compare;
-        if (r.done()) throw UsageError("compare: give IMAGE and REFERENCE");
-        c.image = r.next();
-        if (r.done()) throw UsageError("compare: give IMAGE and REFERENCE");
-        c.reference = r.next();
-        if (!r.done()) throw UsageError("compare: unexpected argument '" + r.next() + "'");
+        std::vector<std::string> files; // IMAGE REFERENCE, with --mask FILE anywhere
+        while (!r.done()) {
+            std::string arg = r.next();
+            std::string flag = arg.substr(0, arg.find('='));
+            if (flag == "--mask")
+                c.mask = r.value(flag, arg);
+            else if (arg.rfind("-", 0) == 0)
+                throw UsageError("unknown option " + flag + " (see smallmlt --help)");
+            else
+                files.push_back(arg);
+        }
+        if (files.size() < 2) throw UsageError("compare: give IMAGE and REFERENCE");
+        if (files.size() > 2) throw UsageError("compare: unexpected argument '" + files[2] + "'");
+        c.image = files[0];
+        c.reference = files[1];
     } else if (cmd == "render") {
         c.kind = CommandKind::Render;
         c.render = parse_render(r);

@@ -38,6 +38,7 @@ struct RenderOptions {
     std::string reference;       // --reference: error measured against it
     std::string log;             // --log: CSV of error against render time
     double log_interval_s = 1.0; // --log-every
+    std::string reference_mask;  // --reference-mask: its lit pixels are left out of mse_unlit
     std::optional<int> width, height, depth;
     Roulette roulette;                    // --rr-*: every method
     PtSampler sampler = PtSampler::Sobol; // --sampler: path tracing
@@ -68,6 +69,7 @@ struct Command {
     RenderOptions render;
     BudgetOptions budget;
     std::string image, reference; // compare
+    std::string mask;             // compare --mask
 };
 
 Command parse_command_line(int argc, const char* const* argv);

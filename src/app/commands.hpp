@@ -24,7 +24,7 @@ std::unique_ptr<Integrator> make_integrator(const RenderOptions& o, const ClCont
                                             const DeviceScene& ds, const RankGroup& ranks);
 int run_budget(const BudgetOptions& o);   // budget_command.cpp
 int run_compare(const std::string& image, // compare_command.cpp
-                const std::string& reference);
+                const std::string& reference, const std::string& mask);
 int run_devices(); // devices_command.cpp
 
 } // namespace smallmlt

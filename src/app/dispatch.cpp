@@ -21,7 +21,7 @@ int run_command(const Command& c, const char* program, RankGroup& ranks) {
     case CommandKind::Budget:
         return run_budget(c.budget);
     case CommandKind::Compare:
-        return run_compare(c.image, c.reference);
+        return run_compare(c.image, c.reference, c.mask);
     case CommandKind::Devices:
         return run_devices();
     case CommandKind::Render:

@@ -137,8 +137,8 @@ void set_up(const RenderOptions& o, RankGroup& ranks, RenderSetup& s) {
     if (o.depth) s.scene.depth = *o.depth;
     s.scene.roulette = o.roulette;
     if (!o.reference.empty() && ranks.rank() == 0)
-        s.log = std::make_unique<ConvergenceLog>(o.reference, o.log, o.log_interval_s,
-                                                 s.scene.width, s.scene.height);
+        s.log = std::make_unique<ConvergenceLog>(o.reference, o.reference_mask, o.log,
+                                                 o.log_interval_s, s.scene.width, s.scene.height);
     s.ds = prepare_scene(s.scene);
     int device = o.device;
     if (!o.device_given) device = ranks.local_rank() % int(cl_list_devices().size());
@@ -198,9 +198,13 @@ void print_summary(const RenderOptions& o, const RenderSetup& s, const LoopResul
         for (std::size_t k = 0; k < lines.size(); ++k)
             std::printf("rank %zu: %s\n", k, lines[k].c_str());
     }
-    if (s.log)
-        std::printf("error against %s: mse %.6g rel_mse %.6g\n", o.reference.c_str(),
-                    s.log->last().mse, s.log->last().rel_mse);
+    if (s.log) {
+        const ErrorSample& e = s.log->last();
+        std::printf("error against %s: mse %.6g rel_mse %.6g block8_mse %.6g", o.reference.c_str(),
+                    e.mse, e.rel_mse, e.block8_mse);
+        if (s.log->has_mask()) std::printf(" mse_unlit %.6g", e.mse_unlit);
+        std::printf("\n");
+    }
     for (std::size_t k = 0; k < notes.size(); ++k) {
         std::string rest = notes[k],
                     who = ranks.size() == 1 ? "" : " (rank " + std::to_string(k) + ")";

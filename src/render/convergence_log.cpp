@@ -10,15 +10,27 @@
 
 namespace smallmlt {
 
-ConvergenceLog::ConvergenceLog(const std::string& reference_path, const std::string& log_path,
-                               double interval_s, int width, int height)
-    : reference_(read_image(reference_path)), log_path_(log_path), interval_s_(interval_s),
-      next_s_(interval_s), pixels_(std::uint64_t(width) * std::uint64_t(height)) {
-    if (reference_.width != width || reference_.height != height)
-        throw InputError("--reference " + reference_path + ": image is " +
-                         std::to_string(reference_.width) + "x" +
-                         std::to_string(reference_.height) + ", the film " + std::to_string(width) +
-                         "x" + std::to_string(height));
+namespace {
+
+// The image file given to `flag`, which must be of the film's size.
+Image read_film_image(const std::string& flag, const std::string& path, int width, int height) {
+    Image img = read_image(path);
+    if (img.width != width || img.height != height)
+        throw InputError(flag + " " + path + ": image is " + std::to_string(img.width) + "x" +
+                         std::to_string(img.height) + ", the film " + std::to_string(width) + "x" +
+                         std::to_string(height));
+    return img;
+}
+
+} // namespace
+
+ConvergenceLog::ConvergenceLog(const std::string& reference_path, const std::string& mask_path,
+                               const std::string& log_path, double interval_s, int width,
+                               int height)
+    : reference_(read_film_image("--reference", reference_path, width, height)),
+      mask_path_(mask_path), log_path_(log_path), interval_s_(interval_s), next_s_(interval_s),
+      pixels_(std::uint64_t(width) * std::uint64_t(height)) {
+    if (has_mask()) mask_ = read_film_image("--reference-mask", mask_path_, width, height);
     if (log_path_.empty()) return;
     std::size_t slash = log_path_.find_last_of('/');
     std::size_t base = slash == std::string::npos ? 0 : slash + 1;
@@ -27,7 +39,7 @@ ConvergenceLog::ConvergenceLog(const std::string& reference_path, const std::str
     tmp_guard_ = std::make_unique<TempFileGuard>(tmp_path_);
     log_ = std::fopen(tmp_path_.c_str(), "w");
     if (!log_) throw InputError("--log " + log_path_ + ": " + std::strerror(errno));
-    std::fputs("seconds,samples_per_pixel,samples,mse,rel_mse\n", log_);
+    std::fputs("seconds,samples_per_pixel,samples,mse,rel_mse,mse_unlit,block8_mse\n", log_);
     std::fflush(log_);
 }
 
@@ -38,12 +50,19 @@ ConvergenceLog::~ConvergenceLog() {
 }
 
 void ConvergenceLog::record(double render_s, double spp, const Image& img) {
-    last_ = {render_s, spp, image_mse(img, reference_), image_rel_mse(img, reference_)};
+    last_ = {render_s,
+             spp,
+             image_mse(img, reference_),
+             image_rel_mse(img, reference_),
+             has_mask() ? image_mse_excluding(img, reference_, mask_, mask_path_) : 0.0,
+             image_block_mse(img, reference_, kErrorBlock)};
     measured_ = true;
     if (!log_) return;
-    std::fprintf(log_, "%.4f,%.6g,%llu,%.9g,%.9g\n", render_s, spp,
+    char unlit[32] = "";
+    if (has_mask()) std::snprintf(unlit, sizeof unlit, "%.9g", last_.mse_unlit);
+    std::fprintf(log_, "%.4f,%.6g,%llu,%.9g,%.9g,%s,%.9g\n", render_s, spp,
                  static_cast<unsigned long long>(std::llround(spp * double(pixels_))), last_.mse,
-                 last_.rel_mse);
+                 last_.rel_mse, unlit, last_.block8_mse);
     std::fflush(log_);
     while (next_s_ <= render_s)
         next_s_ += interval_s_;

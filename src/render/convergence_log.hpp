@@ -1,8 +1,12 @@
 // Error against a reference image during a render (--reference, --log):
-// MSE and relative MSE on linear RGB over the whole film, the definitions of
-// `smallmlt compare` (src/image_metrics.hpp). The log is a CSV with one row
-// per interval of render time, written to a temporary file and renamed into
-// place when the render ends, so a failed render leaves no log behind.
+// MSE and relative MSE on linear RGB over the whole film, MSE over the
+// pixels that --reference-mask leaves (mse_unlit) and the MSE of 8x8 block
+// means (block8_mse), the definitions of `smallmlt compare`
+// (src/image/image_metrics.hpp). The log is a CSV with one row per interval
+// of render time, "seconds,samples_per_pixel,samples,mse,rel_mse,mse_unlit,
+// block8_mse", mse_unlit an empty field without a mask; it is written to a
+// temporary file and renamed into place when the render ends, so a failed
+// render leaves no log behind.
 #pragma once
 #include "base/interrupt.hpp"
 #include "image/image.hpp"
@@ -18,14 +22,17 @@ struct ErrorSample {
     double seconds = 0; // render time: measuring is not counted
     double spp = 0;     // samples (PT) or mutations (MLT) per pixel
     double mse = 0, rel_mse = 0;
+    double mse_unlit = 0; // 0 without a mask
+    double block8_mse = 0;
 };
 
 class ConvergenceLog {
   public:
-    // `log_path` may be empty: then only the final error is kept. Throws
-    // InputError if the reference cannot be read or does not match the film.
-    ConvergenceLog(const std::string& reference_path, const std::string& log_path,
-                   double interval_s, int width, int height);
+    // `log_path` may be empty: then only the final error is kept; so may
+    // `mask_path`: then there is no mse_unlit. Throws InputError if the
+    // reference or the mask cannot be read or does not match the film.
+    ConvergenceLog(const std::string& reference_path, const std::string& mask_path,
+                   const std::string& log_path, double interval_s, int width, int height);
     ~ConvergenceLog();
     ConvergenceLog(const ConvergenceLog&) = delete;
     ConvergenceLog& operator=(const ConvergenceLog&) = delete;
@@ -38,9 +45,11 @@ class ConvergenceLog {
     // moved into place.
     void finish(double render_s, double spp, const Image& img);
     const ErrorSample& last() const { return last_; }
+    bool has_mask() const { return !mask_path_.empty(); }
 
   private:
-    Image reference_;
+    Image reference_, mask_;
+    std::string mask_path_;
     std::string log_path_, tmp_path_;
     std::FILE* log_ = nullptr;
     std::unique_ptr<TempFileGuard> tmp_guard_;
