@@ -8,7 +8,7 @@
 # metric, the time it needs to reach PT's final error, as a ratio of PT's
 # time (medians over the seeds; bench/time_to_error.awk).
 # Writes bench/results/error_time/. Usage: bench/error_time.sh [BIN]
-# Settings (environment): SCENES, SIZE, SECONDS, SEEDS, LOG_EVERY, THREADS;
+# Settings (environment): SCENES, SIZE, SECONDS, SEEDS, LOG_EVERY, THREADS, METHODS;
 # PLOT_ONLY=1 redraws the charts and the table from the last run's CSVs.
 set -eu
 BIN=${1:-build/smallmlt}
@@ -21,17 +21,21 @@ THREADS=${THREADS:-auto}
 OUT=${RESULTS:-bench/results}/error_time
 mkdir -p "$OUT"
 
-# method name and its flags
+# method name and its flags; mlt-eF: the default with --omc-effort F
 flags() {
     case $1 in
     pt) echo "--method pt" ;;
-    mlt-none) echo "--method mlt --burn-in none --large-step 0.5 --threads $THREADS" ;;
+    mlt-none) echo "--method mlt --split none --burn-in none --large-step 0.5 --threads $THREADS" ;;
+    mlt-nosplit) echo "--method mlt --split none --threads $THREADS" ;;
+    mlt-visible) echo "--method mlt --split visible --threads $THREADS" ;;
     mlt) echo "--method mlt --threads $THREADS" ;;
+    mlt-e*) echo "--method mlt --omc-effort ${1#mlt-e} --threads $THREADS" ;;
     mlt-k2) echo "--method mlt --proposals 2 --threads $THREADS" ;;
     mlt-k4) echo "--method mlt --proposals 4 --threads $THREADS" ;;
+    *) echo "error_time.sh: unknown method $1" >&2; exit 2 ;;
     esac
 }
-METHODS="pt mlt-none mlt mlt-k2 mlt-k4"
+METHODS=${METHODS:-pt mlt-none mlt-nosplit mlt-visible mlt mlt-k2 mlt-k4}
 
 echo "device: $("$BIN" devices | sed -n '1p'), cores: $(nproc)" | tee "$OUT/machine.txt"
 echo "scene,method,mse_ratio,rel_mse_ratio,mse_unlit_ratio,block8_mse_ratio,pt_seconds,target_mse" > "$OUT/time_to_error.csv"
@@ -55,7 +59,9 @@ for scene in $SCENES; do
     awk -F, -v s="$first" 'NR == 1 || $2 == s' "$csv" | cut -d, -f1,3,6 > "$OUT/$scene-seed$first.csv"
     sh bench/plot_error.sh "$OUT/$scene-seed$first.csv" "$OUT/$scene.png" \
         "$scene ${SIZE}x$SIZE, seed $first (reference: PT, $(sed -n 's/.* \([0-9]* spp\).*/\1/p' "${ref%.pfm}.txt"))" \
-        "pt=PT" "mlt-none=MLT, no burn-in, large step 0.5" "mlt=MLT, OMC burn-in (default)" \
+        "pt=PT" "mlt-none=MLT, no burn-in, no split, large step 0.5" \
+        "mlt-nosplit=MLT, OMC burn-in, no split" "mlt-visible=MLT, split visible" \
+        "mlt=MLT, OMC burn-in, split direct (default)" \
         "mlt-k2=split-transition K = 2" "mlt-k4=split-transition K = 4"
     awk -F, -v scene="$scene" -f bench/median.awk -f bench/time_to_error.awk "$csv" >> "$OUT/time_to_error.csv"
 done

@@ -1,6 +1,6 @@
 #!/bin/sh
 # Log-log chart of error against wall time from a CSV whose rows are
-# "series,seconds,mse,...": one line per series.
+# "series,seconds,mse,...": one line per series (those in the CSV).
 # Usage: bench/plot_error.sh CSV OUT.png TITLE SERIES=LABEL...
 set -eu
 csv=$1 out=$2 title=$3
@@ -15,6 +15,7 @@ shift 3
     printf "plot "
     sep=""
     for pair in "$@"; do
+        grep -q "^${pair%%=*}," "$csv" || continue # a series this run left out
         printf "%s'< grep ^%s, %s' using 2:3 with linespoints title '%s'" "$sep" "${pair%%=*}" "$csv" "${pair#*=}"
         sep=", "
     done

@@ -40,6 +40,7 @@ DeviceInfo emulate_profile(const DeviceInfo& real, const DeviceProfile& p) {
     d.local_mem_bytes = std::min(real.local_mem_bytes, p.local_mem_bytes);
     d.compute_units = p.compute_units; // these size the thread count only
     d.max_work_group = p.max_work_group;
+    d.cpu = false; // every profile is a GPU
     d.int64_atomics = real.int64_atomics && p.int64_atomics;
     d.emulated = true;
     return d;

@@ -201,8 +201,9 @@ void require_work_group(const DeviceInfo& dev) {
 }
 
 std::uint32_t busy_threads(const DeviceInfo& dev) {
-    std::uint64_t want = std::uint64_t(std::max(1u, dev.compute_units)) *
-                         std::max<std::uint64_t>(dev.max_work_group, 1) * 8;
+    std::uint64_t per_unit = dev.cpu ? kCpuThreadsPerCore
+                                     : std::max<std::uint64_t>(dev.max_work_group, 1) * 8;
+    std::uint64_t want = std::uint64_t(std::max(1u, dev.compute_units)) * per_unit;
     std::uint32_t n = 1u << 10;
     while (n < want && n < (1u << 20))
         n <<= 1;

@@ -92,8 +92,11 @@ std::uint64_t smallest_device_memory(const std::function<MemoryPlan(std::uint64_
 // kDefaultWorkGroup work-items, the size every kernel runs in.
 void require_work_group(const DeviceInfo& dev);
 
-// Threads that keep the device busy: 8 work-groups of the largest size per
-// compute unit, rounded up to a power of two, within [2^10, 2^20].
+// Threads that keep the device busy: on a GPU, 8 work-groups of the largest
+// size per compute unit; on a CPU, kCpuThreadsPerCore per core (its
+// throughput is flat in N, doc/RESULTS.md, and fewer chains run longer);
+// rounded up to a power of two, within [2^10, 2^20].
+constexpr std::uint64_t kCpuThreadsPerCore = 8192;
 std::uint32_t busy_threads(const DeviceInfo& dev);
 
 struct ThreadChoice {

@@ -143,6 +143,7 @@ std::vector<DeviceInfo> cl_list_devices() {
             info.local_mem_bytes = device_value<cl_ulong>(d, CL_DEVICE_LOCAL_MEM_SIZE);
             info.compute_units = device_value<cl_uint>(d, CL_DEVICE_MAX_COMPUTE_UNITS);
             info.max_work_group = device_value<std::size_t>(d, CL_DEVICE_MAX_WORK_GROUP_SIZE);
+            info.cpu = device_value<cl_device_type>(d, CL_DEVICE_TYPE) & CL_DEVICE_TYPE_CPU;
             std::string ext = device_string(d, CL_DEVICE_EXTENSIONS);
             info.int64_atomics = ext.find("cl_khr_int64_base_atomics") != std::string::npos;
             out.push_back(info);

@@ -35,6 +35,7 @@ struct DeviceInfo {
     std::uint32_t compute_units = 0;
     std::size_t max_work_group = 0;
     bool int64_atomics = false;
+    bool cpu = false;      // CL_DEVICE_TYPE_CPU: its compute units are cores
     bool emulated = false; // limited by --profile or --device-mem (src/device_profile.hpp)
 };
 
