@@ -1,5 +1,5 @@
 #!/bin/sh
-# The paper's Figure 1 on cornell-water: MLT without burn-in (large step 0.5),
+# The paper's Figure 1 on cornell-water: the paper's MLT without burn-in (no split, large step 0.5),
 # MLT with OMC burn-in (the defaults) and PT, each rendered for the same wall
 # times; images at three of them side by side, and error (MSE against a long
 # PT reference, linear HDR) against time for all three in one log-log chart.
@@ -20,7 +20,7 @@ mlt="--method mlt ${THREADS:+--threads $THREADS}"
 [ -n "${PLOT_ONLY:-}" ] || echo "method,seconds,mse,rel_mse" > "$csv"
 [ -n "${PLOT_ONLY:-}" ] && TIMES=""
 for t in $TIMES; do
-    "$BIN" render $common $mlt --burn-in none --large-step 0.5 --time "$t" \
+    "$BIN" render $common $mlt --split none --burn-in none --large-step 0.5 --time "$t" \
         --out "$OUT/none-$t.pfm" --out "$OUT/none-$t.png"
     "$BIN" render $common $mlt --time "$t" --out "$OUT/omc-$t.pfm" --out "$OUT/omc-$t.png"
     "$BIN" render $common --method pt --time "$t" --out "$OUT/pt-$t.pfm" --out "$OUT/pt-$t.png"

@@ -21,13 +21,15 @@ THREADS=${THREADS:-auto}
 OUT=${RESULTS:-bench/results}/error_time
 mkdir -p "$OUT"
 
-# method name and its flags; mlt-eF: the default with --omc-effort F
+# method name and its flags; -eF: --omc-effort F
 flags() {
     case $1 in
     pt) echo "--method pt" ;;
     mlt-none) echo "--method mlt --split none --burn-in none --large-step 0.5 --threads $THREADS" ;;
     mlt-nosplit) echo "--method mlt --split none --threads $THREADS" ;;
     mlt-visible) echo "--method mlt --split visible --threads $THREADS" ;;
+    mlt-direct) echo "--method mlt --split direct --threads $THREADS" ;;
+    mlt-direct-e*) echo "--method mlt --split direct --omc-effort ${1#mlt-direct-e} --threads $THREADS" ;;
     mlt) echo "--method mlt --threads $THREADS" ;;
     mlt-e*) echo "--method mlt --omc-effort ${1#mlt-e} --threads $THREADS" ;;
     mlt-k2) echo "--method mlt --proposals 2 --threads $THREADS" ;;
@@ -35,7 +37,7 @@ flags() {
     *) echo "error_time.sh: unknown method $1" >&2; exit 2 ;;
     esac
 }
-METHODS=${METHODS:-pt mlt-none mlt-nosplit mlt-visible mlt mlt-k2 mlt-k4}
+METHODS=${METHODS:-pt mlt-none mlt-nosplit mlt-visible mlt-direct mlt mlt-k2 mlt-k4}
 
 echo "device: $("$BIN" devices | sed -n '1p'), cores: $(nproc)" | tee "$OUT/machine.txt"
 echo "scene,method,mse_ratio,rel_mse_ratio,mse_unlit_ratio,block8_mse_ratio,pt_seconds,target_mse" > "$OUT/time_to_error.csv"
@@ -61,7 +63,7 @@ for scene in $SCENES; do
         "$scene ${SIZE}x$SIZE, seed $first (reference: PT, $(sed -n 's/.* \([0-9]* spp\).*/\1/p' "${ref%.pfm}.txt"))" \
         "pt=PT" "mlt-none=MLT, no burn-in, no split, large step 0.5" \
         "mlt-nosplit=MLT, OMC burn-in, no split" "mlt-visible=MLT, split visible" \
-        "mlt=MLT, OMC burn-in, split direct (default)" \
+        "mlt-direct=MLT, split direct" "mlt=MLT, split auto (default)" \
         "mlt-k2=split-transition K = 2" "mlt-k4=split-transition K = 4"
     awk -F, -v scene="$scene" -f bench/median.awk -f bench/time_to_error.awk "$csv" >> "$OUT/time_to_error.csv"
 done

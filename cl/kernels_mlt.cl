@@ -6,9 +6,11 @@
 
 /* Luminance I of the OMC path of each key rng_key(seed, first + i, 0): the
  * normalization b = E[I] is their mean. With a split (PATH_SPLIT > 0) the
- * path's OMC part and pixel go to omc[i] (xyz: RGB; w: the pixel's bits),
- * so that the burn-in's paths also render the OMC part (the host adds them
- * in sample order: no atomics, and the same sums every time). */
+ * path's parts go to omc[2 i] (xyz: the OMC part, RGB; w: the pixel's bits)
+ * and omc[2 i + 1] (xyz: the MLT part; w: the rays traced), so that the
+ * burn-in's paths also render the OMC part, and the host can tell how well
+ * path tracing renders the MLT part (src/render/split.hpp). The host adds
+ * them in sample order: no atomics, and the same sums every time. */
 __kernel void mlt_luminance(__global const Triangle* tris, __global const BvhNode* nodes,
                             __global const Material* mats, __global const LightEntry* lights,
                             const Frame frame, __global uint* state, const ulong seed,
@@ -24,7 +26,8 @@ __kernel void mlt_luminance(__global const Triangle* tris, __global const BvhNod
         EvalResult s = mlt_checked(eval_state(&sc, &frame, &src), &nonfinite);
         lum[i] = path_luminance(s.f);
 #if PATH_SPLIT > 0
-        omc[i] = (float4)(s.omc, as_float(s.pixel));
+        omc[2u * i] = (float4)(s.omc, as_float(s.pixel));
+        omc[2u * i + 1u] = (float4)(s.f, (float)s.rays);
 #endif
     }
     mlt_publish_nonfinite(stats, l_count, nonfinite);

@@ -16,10 +16,12 @@ struct Case {
     const char* scene;
     std::uint32_t threads, proposals;
     int depth;
+    Split split = Split::None;
 };
 
 // Device bytes a full MLT render (burn-in, steps, image) allocates at its peak.
-std::uint64_t mlt_peak(const DeviceScene& ds, std::uint32_t threads, std::uint32_t proposals = 1) {
+std::uint64_t mlt_peak(const DeviceScene& ds, std::uint32_t threads, std::uint32_t proposals = 1,
+                       Split split = Split::None) {
     const ClContext& cl = test::cl();
     std::uint64_t before = cl.live_bytes();
     cl.reset_peak();
@@ -28,6 +30,7 @@ std::uint64_t mlt_peak(const DeviceScene& ds, std::uint32_t threads, std::uint32
         opt.threads = threads;
         opt.proposals = proposals;
         opt.burn_in_iters = 2;
+        opt.split = split;
         MltRenderer mlt(cl, ds, opt);
         mlt.prepare();
         mlt.step(1);
@@ -45,14 +48,18 @@ TEST(MemoryPlan, PredictsWhatMltRendersAllocate) {
     for (Case c : {Case{"cornell-water", 1024, 1, 24}, Case{"cornell", 4096, 1, 3},
                    Case{"cornell-glass", 704, 1, 16}, Case{"ajar", 64, 1, 1},
                    Case{"cornell-water", 1024, 2, 24}, Case{"cornell", 4096, 4, 8},
-                   Case{"cornell-glass", 512, 8, 16}}) {
+                   Case{"cornell-glass", 512, 8, 16},
+                   Case{"cornell-water", 1024, 1, 24, Split::Direct},
+                   Case{"cornell", 4096, 4, 8, Split::Visible}}) {
         DeviceScene ds = prepare_scene(test::scene(c.scene, 24, 16, c.depth));
-        MemoryPlan plan = plan_mlt(ds, ChainShape{c.threads, c.proposals, false},
-                                   scan_work_group(test::cl().device()));
+        MemoryPlan plan =
+            plan_mlt(ds, ChainShape{c.threads, c.proposals, false, false, c.split != Split::None},
+                     scan_work_group(test::cl().device()));
         EXPECT_EQ(plan.bytes("values"),
                   std::uint64_t(c.threads / c.proposals) * sizeof(ChainValue));
-        EXPECT_EQ(mlt_peak(ds, c.threads, c.proposals), plan.total())
-            << c.scene << " N " << c.threads << " K " << c.proposals;
+        EXPECT_EQ(mlt_peak(ds, c.threads, c.proposals, c.split), plan.total())
+            << c.scene << " N " << c.threads << " K " << c.proposals << " split "
+            << split_name(c.split);
     }
 }
 

@@ -208,8 +208,11 @@ TEST_P(RenderBlocks, MltMatchesPathTracingPerBlock) {
 //   6 s.
 // - cornell-water, K = 1: 2 x 2 blocks of 16 x 16; 8 renders x 48 steps; PT
 //   1,536 spp; 2.7% / 13% / 28% (the two quadrants under water); 10 s.
-// - ajar, K = 1: 2 x 2 blocks; 8 renders x 48 steps; PT 1,536 spp;
-//   3.6% / 8.5% / 11%; 11 s.
+// - cornell-water and ajar, K = 1, split direct (the default): the whole
+//   image (OMC part and chains) per block, and its mean against PT's; 2 x 2
+//   blocks; 8 renders x 48 steps with a twentieth of the rule's OMC time
+//   (the rule would spend most of a test's time there); 3.2% / 7.4% / 13%
+//   and 3.0% / 4.8% / 8.2%; 17 s each.
 // 4,096 threads at least: burn-in picks each round's chain starts in
 // proportion to that round's 4,096 OMC samples, and with fewer the starts
 // themselves give cornell's bright light too little (1.5-2% at 2,048), a

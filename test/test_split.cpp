@@ -125,3 +125,49 @@ TEST(Split, FurnacePartsAreTheClosedForm) {
         EXPECT_GT(mlt.omc_spp(), 0u) << split_name(s);
     }
 }
+
+namespace {
+
+// A rank whose others all vote no.
+class OutvotedRank : public SingleRank {
+  public:
+    bool all(bool) override { return false; }
+};
+
+} // namespace
+
+// --split auto runs chains only where the MLT part's per-pixel relative
+// variance says they pay: not in the furnace, whose light after the first
+// vertex is smooth (every path of the same length carries the same light),
+// where it renders the whole image by per-pixel samples (the burn-in's whole
+// paths too) and matches the closed form; but on cornell-water, whose MLT
+// part holds the caustics. Ranks agree: one rank's no is every rank's.
+TEST(Split, AutoRunsChainsOnlyWhereTheyPay) {
+    MltOptions opt;
+    opt.threads = 4096;
+    opt.burn_in_iters = 8;
+    opt.seed = 12;
+    opt.split = Split::Auto;
+    DeviceScene furnace = prepare_scene(test::scene("furnace", 16, 16, 4));
+    MltRenderer f(test::cl(), furnace, opt);
+    f.prepare();
+    f.step(8);
+    std::printf("furnace: r %.3g, split %s; cornell-water: ", f.mlt_relative_variance(),
+                split_name(f.split()));
+    EXPECT_EQ(f.split(), Split::All);
+    EXPECT_EQ(f.stats().mutations, 0u);
+    EXPECT_NEAR(f.image().mean_luminance(), furnace_sum(0, 4), 0.003 * furnace_sum(0, 4));
+
+    DeviceScene water = prepare_scene(test::scene("cornell-water", 32, 32));
+    MltRenderer w(test::cl(), water, opt);
+    w.prepare();
+    w.step(2);
+    std::printf("r %.3g, split %s\n", w.mlt_relative_variance(), split_name(w.split()));
+    EXPECT_EQ(w.split(), kChainsSplit);
+    EXPECT_GT(w.stats().mutations, 0u);
+
+    OutvotedRank outvoted;
+    MltRenderer o(test::cl(), water, opt);
+    o.prepare(outvoted);
+    EXPECT_EQ(o.split(), Split::All) << "the ranks did not agree";
+}

@@ -79,10 +79,13 @@ MLT options:
                      luminance (default), or at fresh OMC samples
   --burn-in-iters T  OMC rounds of one sample per chain (default 32); all of them
                      estimate the normalization b
-  --split none|visible|direct  what the chains render: all light (none), or
-                     all but the OMC part, rendered by per-pixel samples: the
-                     emission the camera sees (visible), plus direct light at
-                     the first vertex (direct, the default)
+  --split none|visible|direct|all|auto  what the chains render: all light
+                     (none), or all but the OMC part, rendered by per-pixel
+                     samples: the emission the camera sees (visible), plus
+                     direct light at the first vertex (direct), or nothing
+                     (all: path tracing); auto (the default) is visible, or all
+                     where the burn-in shows that path tracing renders the
+                     rest well (doc/design.md, "The split")
   --omc-effort F     F times the OMC part's share of time that the split's rule
                      gives it (default 1; doc/design.md, "The split")
   --large-step P     probability that a mutation draws a whole new path
@@ -98,7 +101,8 @@ MLT options:
 Budget options:
   --threads N|auto   as for render (default auto)
   --proposals K      proposals per chain: N threads keep N/K chain states (default 1)
-  --split none|visible|direct  as for render (a split adds the OMC part's film)
+  --split none|visible|direct|all|auto  as for render (a split adds the OMC
+                     part's film)
   --depth D          report depths 1..D (default: the scene's depth)
   --width W, --height H  the film (overrides the scene)
   --device-mem BYTES as for render

@@ -146,7 +146,7 @@ MemoryPlan plan_mlt(const DeviceScene& ds, const ChainShape& shape, std::size_t 
         add_film(p, pixels(ds), kPtFilmPixelBytes, max_alloc, "OMC ");
         p.buffers.push_back(
             {"OMC stats", group_rows(pixels(ds)) * PT_STAT_COUNT * sizeof(std::uint64_t), false});
-        p.buffers.push_back({"OMC samples", threads * 4 * sizeof(float), true});
+        p.buffers.push_back({"OMC samples", threads * 8 * sizeof(float), true});
     }
     return p;
 }

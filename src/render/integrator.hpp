@@ -4,6 +4,7 @@
 // the tallies of several ranks (src/render/ranks.hpp), summed, make theirs.
 #pragma once
 #include "image/image.hpp"
+#include "render/ranks.hpp"
 
 #include <cstdint>
 #include <string>
@@ -21,8 +22,9 @@ struct Tally {
 class Integrator {
   public:
     virtual ~Integrator() = default;
-    // Work before the first unit that belongs to the render (MLT: b, chains).
-    virtual void prepare() {}
+    // Work before the first unit that belongs to the render (MLT: b, chains),
+    // agreed with the other ranks where it decides anything.
+    virtual void prepare(RankGroup&) {}
     virtual void advance(std::uint32_t units) = 0;
     // Units that make rank `rank`'s share of `spp` samples (or mutations)
     // per pixel on average, shared among `ranks` (one: all of them).

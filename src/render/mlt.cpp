@@ -62,30 +62,33 @@ std::uint64_t rng_key(std::uint64_t seed, std::uint32_t a, std::uint32_t b) {
     return rng_mix64(seed + rng_mix64((std::uint64_t(a) << 32) | b));
 }
 
-// Adds burn-in samples' OMC parts (RGB, then the pixel's bits; a dropped
-// sample is 0) to their pixels' sums; returns the sum of their squared
-// luminances.
-double add_omc_samples(const std::vector<float>& samples, std::vector<double>& sums) {
+// Adds burn-in samples' parts (8 floats each: the OMC part's RGB, the
+// pixel's bits, the MLT part's RGB, rays; a dropped sample is 0) to their
+// pixels' sums; returns the sum of the OMC parts' squared luminances.
+double add_burn_in_parts(const std::vector<float>& samples, std::vector<double>& omc,
+                         std::vector<double>& rest) {
     double sum2 = 0;
-    for (std::size_t i = 0; i + 4 <= samples.size(); i += 4) {
+    for (std::size_t i = 0; i + 8 <= samples.size(); i += 8) {
         std::uint32_t pixel;
         std::memcpy(&pixel, &samples[i + 3], sizeof pixel);
-        double* at = &sums.at(3 * std::size_t(pixel));
-        for (int c = 0; c < 3; ++c)
-            at[c] += samples[i + c];
+        std::size_t at = 3 * std::size_t(pixel);
+        for (int c = 0; c < 3; ++c) {
+            omc.at(at + c) += samples[i + c];
+            rest.at(at + c) += samples[i + 4 + c];
+        }
         double y = rgb_luminance(samples[i], samples[i + 1], samples[i + 2]);
         sum2 += y * y;
     }
     return sum2;
 }
 
-// V_o of src/render/split.hpp from M burn-in samples, uniform over the P
-// pixels: their OMC-part sums per pixel and channel and the sum of their
+// V_o (or V_m) of src/render/split.hpp from M burn-in samples, uniform over
+// the P pixels: their part's sums per pixel and channel and the sum of their
 // squared luminances. With Q = (P / M) sum f^2, an unbiased estimate of
 // sum_p E_p[f^2], and mu_p = (P / M) S_p, whose square overestimates
 // mu_p^2 by about (P / M) E_p[f^2], V_o = sum_p (E_p[f^2] - mu_p^2) is
 // about Q (1 + P / M) - sum_p mu_p^2.
-double omc_part_variance(const std::vector<double>& sums, double sum2, double samples) {
+double part_variance(const std::vector<double>& sums, double sum2, double samples) {
     const double pixels = double(sums.size() / 3), per = pixels / samples;
     double mu2 = 0;
     for (std::size_t p = 0; p < sums.size(); p += 3) {
@@ -174,10 +177,11 @@ MltRenderer::MltRenderer(const ClContext& cl, const DeviceScene& ds, const MltOp
       film_(cl, pixels(),
             plan_mlt_film(pixels(), opt.threads, max_alloc(cl, opt), opt.film_atomics64,
                           opt.film_pass_mutations)) {
+    split_ = opt.split;
     if (opt.split != Split::None) {
-        omc_ = std::make_unique<PathTracer>(cl, ds, derive_seed(opt.seed, kPurposePixel),
-                                            OmcPart{opt.split, &scene_}, max_alloc(cl, opt));
         burn_in_omc_.assign(3 * pixels(), 0.0);
+        burn_in_rest_.assign(3 * pixels(), 0.0);
+        omc_ = make_omc_part(split_ == Split::Auto ? kChainsSplit : split_);
     }
     state_.fill_zero(cl);
     stats_.fill_zero(cl);
@@ -193,7 +197,7 @@ void MltRenderer::sample_starts() {
     ClBuffer omc = split ? ClBuffer(cl_, CL_MEM_READ_WRITE, plan_.bytes("OMC samples"))
                          : ClBuffer();
     BurnInPicker picker(cl_, program_.p, m);
-    std::vector<float> host(m), host_omc(split ? 4 * m : 0);
+    std::vector<float> host(m), host_omc(split ? 8 * m : 0);
     std::uint64_t sum = 0;
     double sum2 = 0, omc_sum2 = 0;
     cl_ulong omc_seed = derive_seed(opt_.seed, kPurposeOmc);
@@ -210,7 +214,7 @@ void MltRenderer::sample_starts() {
         }
         if (split) {
             omc.read(cl_, host_omc.data());
-            omc_sum2 += add_omc_samples(host_omc, burn_in_omc_);
+            omc_sum2 += add_burn_in_parts(host_omc, burn_in_omc_, burn_in_rest_);
         }
         if (opt_.burn_in) picker.add_round(lum, host, m, scan, pick_seed, chains, picks_);
     }
@@ -226,7 +230,10 @@ void MltRenderer::sample_starts() {
     burn_in_sum2_ = sum2;
     burn_in_samples_ = std::uint64_t(m) * iters;
     burn_in_variance_ = n > 1 ? std::max(0.0, (sum2 / n - mean * mean) * n / (n - 1)) : 0;
-    if (split) omc_variance_ = omc_part_variance(burn_in_omc_, omc_sum2, n);
+    if (split) {
+        omc_variance_ = part_variance(burn_in_omc_, omc_sum2, n);
+        mlt_variance_ = part_variance(burn_in_rest_, sum2, n);
+    }
 }
 
 std::uint64_t b_sample_fixed(float lum) {
@@ -255,12 +262,30 @@ double MltRenderer::b_rel_error() const {
     return b_estimate(stats()).rel_error;
 }
 
-void MltRenderer::prepare() {
+void MltRenderer::prepare(RankGroup& ranks) {
     Clock::time_point t0 = Clock::now();
     sample_starts();
-    init_chains();
+    if (split_ == Split::Auto) {
+        bool pay = ranks.all(chains_pay(mlt_relative_variance()));
+        split_ = pay ? kChainsSplit : Split::All;
+        if (!pay) {
+            omc_.reset(); // its buffers first, so the memory plan's peak holds
+            omc_ = make_omc_part(split_);
+        }
+    }
+    if (split_ != Split::All) init_chains();
     prepared_ = true;
     prepare_seconds_ += seconds_since(t0);
+}
+
+double MltRenderer::mlt_relative_variance() const {
+    return mlt_part_relative_variance(mlt_variance_, mlt_b(burn_in_fixed_, burn_in_samples_),
+                                      double(pixels()));
+}
+
+std::unique_ptr<PathTracer> MltRenderer::make_omc_part(Split split) const {
+    return std::make_unique<PathTracer>(cl_, ds_, derive_seed(opt_.seed, kPurposePixel),
+                                        OmcPart{split, &scene_}, max_alloc(cl_, opt_));
 }
 
 void MltRenderer::init_chains() {
@@ -285,9 +310,12 @@ void MltRenderer::step(std::uint32_t n) {
     cl_uint threshold = p >= 1.0 ? 0xFFFFFFFFu : cl_uint(p * 4294967296.0);
     const std::uint32_t drain_every = film_.plan().steps_per_drain;
     Clock::time_point t0 = Clock::now();
+    if (split_ == Split::Auto) split_ = kChainsSplit; // no prepare(): the chains run
+    const bool chains = burn_in_fixed_ > 0 && split_ != Split::All;
     for (std::uint32_t i = 0; i < n; ++i) {
         cl_uint iteration = ++iterations_;
-        if (burn_in_fixed_ > 0) {
+        if (chains) {
+            ++steps_run_;
             k_step_.set_args(scene_.tris, scene_.nodes, scene_.mats, scene_.lights, ds_.frame,
                              state_, values_, cl_uint(opt_.threads), cl_uint(opt_.proposals), seed,
                              iteration, threshold, film_.band(0), film_.band(1), film_.band(2),
@@ -300,7 +328,7 @@ void MltRenderer::step(std::uint32_t n) {
                 film_.drain();
             }
         }
-        if (omc_) omc_after_step();
+        if (omc_) omc_after_step(chains);
     }
     cl_.finish("kernel mlt_step over " + std::to_string(opt_.threads) + " threads");
     step_seconds_ += seconds_since(t0);
@@ -319,14 +347,12 @@ void MltRenderer::choose_omc_rate() {
     omc_rate_ = omc_samples_per_step(c, opt_.omc_effort);
 }
 
-void MltRenderer::omc_after_step() {
-    if (burn_in_fixed_ == 0) {
-        // No path of the burn-in had light in the MLT part: the chains have
-        // nothing to render, and a step's time goes to one OMC sample.
-        omc_->add_samples(1);
-        return;
-    }
-    if (omc_rate_ == 0 && omc_->spp() == 0) {
+void MltRenderer::omc_after_step(bool chains) {
+    if (!chains) {
+        // No chains (Split::All, or no light in the MLT part): a step's time,
+        // one path per thread, goes to per-pixel samples.
+        omc_owed_ += double(opt_.threads) / double(pixels());
+    } else if (omc_rate_ == 0 && omc_->spp() == 0) {
         choose_omc_rate();
         omc_owed_ = std::max(0.0, omc_rate_ - 1);
     } else {
@@ -356,7 +382,7 @@ MltStats MltRenderer::stats() const {
         for (int i = 0; i < MLT_STAT_COUNT; ++i)
             s[i] = i == MLT_STAT_LONGEST ? std::max(s[i], rows[r + i]) : s[i] + rows[r + i];
     MltStats out;
-    out.mutations = std::uint64_t(iterations_) * opt_.threads;
+    out.mutations = std::uint64_t(steps_run_) * opt_.threads;
     out.accepted = s[MLT_STAT_ACCEPTED];
     out.large = s[MLT_STAT_LARGE];
     out.nonfinite = s[MLT_STAT_NONFINITE];
@@ -376,6 +402,14 @@ std::vector<std::string> MltRenderer::notes() const {
         out.push_back(
             std::to_string(n) +
             " samples had a NaN or infinite radiance and were dropped (counted as black)");
+    if (prepared_ && split_ == Split::All && opt_.split == Split::Auto)
+        out.push_back("path tracing renders this scene's light well (the MLT part's relative "
+                      "variance is below " +
+                      std::to_string(int(kChainsPayRatio)) +
+                      "), so no chain ran: --split visible runs them anyway");
+    if (prepared_ && burn_in_fixed_ == 0 && !finished())
+        out.push_back("no OMC sample of the burn-in carried light in the MLT part (b = 0): the "
+                      "chains had nothing to render, and the time went to the OMC part");
     if (finished())
         out.push_back("no OMC sample of " +
                       std::to_string(std::uint64_t(opt_.threads) * opt_.burn_in_iters) +
@@ -418,7 +452,7 @@ std::string MltRenderer::summary(double) const {
                   "large steps %.1f%%, %.2f global atomics/mutation, b = %.5g (+-%.2f%%), "
                   "%llu non-finite dropped, "
                   "longest run of rejections %u, %llu chains stuck (%u in a row)",
-                  chains(), opt_.proposals, iterations_, state_bytes_per_chain(),
+                  chains(), opt_.proposals, steps_run_, state_bytes_per_chain(),
                   double(s.mutations) * per_s, double(s.rays) * per_s, prepare_seconds_,
                   double(s.accepted) * per_mutation, double(s.large) * per_mutation,
                   s.mutations ? double(s.atomics) / double(s.mutations) : 0.0, be.b,
@@ -427,9 +461,11 @@ std::string MltRenderer::summary(double) const {
     std::string out = buf;
     if (omc_) {
         std::snprintf(buf, sizeof buf,
-                      "; split %s: OMC part %u spp + %.1f from burn-in (%.3g spp per step)",
-                      split_name(opt_.split), omc_->spp(),
-                      double(burn_in_samples_) / double(pixels()), omc_rate_);
+                      "; split %s%s: OMC part %u spp + %.1f from burn-in (%.3g spp per step), "
+                      "MLT part's relative variance %.3g",
+                      split_name(split_), opt_.split == Split::Auto ? " (auto)" : "", omc_->spp(),
+                      double(burn_in_samples_) / double(pixels()), omc_rate_,
+                      mlt_relative_variance());
         out += buf;
     }
     return out;
@@ -460,6 +496,9 @@ Tally MltRenderer::tally() const {
         t.ints.push_back(o.ints.at(0));
         t.reals.insert(t.reals.end(), o.reals.begin(), o.reals.end());
         t.reals.insert(t.reals.end(), burn_in_omc_.begin(), burn_in_omc_.end());
+        if (split_ == Split::All) // the burn-in's whole paths
+            for (std::size_t i = 0; i < burn_in_rest_.size(); ++i)
+                t.reals[t.reals.size() - burn_in_rest_.size() + i] += burn_in_rest_[i];
     }
     return t;
 }

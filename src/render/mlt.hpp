@@ -139,7 +139,13 @@ class MltRenderer : public Integrator {
   public:
     MltRenderer(const ClContext& cl, const DeviceScene& ds, const MltOptions& opt);
 
-    void prepare() override;
+    // Burn-in, the split (Split::Auto decides here, every rank alike) and
+    // the chains' starts.
+    void prepare(RankGroup& ranks) override;
+    void prepare() {
+        SingleRank one;
+        prepare(one);
+    }
     void advance(std::uint32_t units) override { step(units); }
     // Steps that make the rank's share of spp x pixels mutations.
     std::uint64_t units_for_spp(std::uint32_t spp, int rank, int ranks) const override;
@@ -184,13 +190,17 @@ class MltRenderer : public Integrator {
     // over the P pixels: M / P of them are expected in each).
     Image image_from(const Tally& summed) const override;
     // One part of the image: the chains' (MLT) or the OMC part (black
-    // without a split).
+    // without a split; the whole image with Split::All).
     enum class Part { Mlt, Omc };
     Image part_image(Part part) const;
     // The OMC part's per-pixel samples per MLT step (split.hpp's rule), once
     // the first step has measured a mutation's rays; 0 before.
     double omc_rate() const { return omc_rate_; }
     std::uint32_t omc_spp() const { return omc_ ? omc_->spp() : 0; }
+    // The split in force: opt.split, with Auto decided by prepare().
+    Split split() const { return split_; }
+    // r of chains_pay (src/render/split.hpp), from the burn-in.
+    double mlt_relative_variance() const;
     const MltFilm& film() const { return film_; }
 
     // For tests: the raw buffers.
@@ -209,13 +219,19 @@ class MltRenderer : public Integrator {
     SceneBuffers scene_;
     ClBuffer state_, values_, stats_, picks_;
     MltFilm film_;
+    Split split_;
     std::unique_ptr<PathTracer> omc_; // the OMC part's per-pixel samples (a split)
-    std::vector<double> burn_in_omc_; // the burn-in's OMC part, summed per pixel and channel
-    double omc_variance_ = 0;         // V_o of split.hpp, from the burn-in
+    // The burn-in's OMC and MLT parts, summed per pixel and channel.
+    std::vector<double> burn_in_omc_, burn_in_rest_;
+    double omc_variance_ = 0, mlt_variance_ = 0; // V_o and V_m of split.hpp, from the burn-in
+    std::uint32_t steps_run_ = 0;                // steps of the chains (none with Split::All)
+    // The OMC part's path tracer for `split`.
+    std::unique_ptr<PathTracer> make_omc_part(Split split) const;
     double omc_rate_ = 0, omc_owed_ = 0;
     std::uint64_t step_rays_ = 0; // rays of the first step (a mutation's cost)
-    // Runs the OMC part's samples owed after a step.
-    void omc_after_step();
+    // Runs the OMC part's samples owed after a step (of the chains, or
+    // without them).
+    void omc_after_step(bool chains);
     void choose_omc_rate();
     Image image_of(const Tally& summed, bool mlt, bool omc) const;
     // Runs mlt_owed in `mode` (MLT_OWED_* of cl/kernels_mlt.cl).

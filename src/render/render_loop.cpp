@@ -45,7 +45,7 @@ void show_progress(Progress& progress, const Integrator& m, const LoopLimits& li
 LoopResult render_loop(Integrator& m, const LoopLimits& limits, ConvergenceLog* log,
                        Progress& progress, RankGroup& ranks) {
     RenderClock clock;
-    m.prepare();
+    m.prepare(ranks);
     std::uint64_t target =
         limits.spp ? m.units_for_spp(*limits.spp, ranks.rank(), ranks.size()) : 0;
     std::uint64_t done = 0;

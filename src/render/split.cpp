@@ -12,18 +12,27 @@ const char* split_name(Split s) {
     case Split::None: return "none";
     case Split::Visible: return "visible";
     case Split::Direct: return "direct";
+    case Split::All: return "all";
+    case Split::Auto: return "auto";
     }
     return "?";
 }
 
 Split parse_split(const std::string& flag, const std::string& name) {
-    for (Split s : {Split::None, Split::Visible, Split::Direct})
+    for (Split s : {Split::None, Split::Visible, Split::Direct, Split::All, Split::Auto})
         if (name == split_name(s)) return s;
-    throw UsageError(flag + " " + name + ": expected none, visible or direct");
+    throw UsageError(flag + " " + name + ": expected none, visible, direct, all or auto");
 }
 
 std::uint32_t split_vertices(Split s) {
-    return s == Split::None ? 0 : s == Split::Visible ? 1 : 2;
+    switch (s) {
+    case Split::None: return 0;
+    case Split::Visible: return 1;
+    case Split::Direct: return 2;
+    case Split::All: return 255; // more vertices than any path has (kMaxDepth 64)
+    case Split::Auto: return split_vertices(kChainsSplit);
+    }
+    return 0;
 }
 
 std::string split_defines(Split s) {
@@ -37,6 +46,18 @@ double omc_samples_per_step(const SplitCosts& c, double effort) {
     double cm = kChainCorrelation * c.b * c.b * c.pixels * c.pixels * c.mutation_rays;
     double ratio = std::sqrt(a / cm) * effort; // t_o / t_m
     return ratio * c.threads * c.mutation_rays / (c.pixels * c.omc_rays);
+}
+
+} // namespace smallmlt
+
+namespace smallmlt {
+
+double mlt_part_relative_variance(double mlt_variance, double b, double pixels) {
+    return b > 0 && pixels > 0 ? mlt_variance / (pixels * b * b) : 0;
+}
+
+bool chains_pay(double relative_variance) {
+    return relative_variance > kChainsPayRatio;
 }
 
 } // namespace smallmlt

@@ -16,15 +16,21 @@ enum class Split {
     None,    // everything to the chains (the paper's estimator)
     Visible, // OMC: emission seen directly by the camera (L < 1)
     Direct,  // OMC: that plus direct light at the first vertex, NEE and BSDF hits, MIS (L < 2)
+    All,     // OMC: everything (path tracing; no chains)
+    Auto,    // kChainsSplit, or All where the chains would not pay (chains_pay)
 };
 
+// What Split::Auto runs where the chains pay: chosen by the bench.
+constexpr Split kChainsSplit = Split::Visible;
+
 // Chosen by the error-against-time bench (doc/RESULTS.md).
-constexpr Split kDefaultSplit = Split::Direct;
+constexpr Split kDefaultSplit = Split::Auto;
 
 const char* split_name(Split s);
 // Throws UsageError naming `flag` for an unknown name.
 Split parse_split(const std::string& flag, const std::string& name);
-// L: terms after fewer vertices are the OMC part (PATH_SPLIT of cl/path.cl).
+// L: terms after fewer vertices are the OMC part (PATH_SPLIT of cl/path.cl);
+// Auto's burn-in traces with kChainsSplit's.
 std::uint32_t split_vertices(Split s);
 std::string split_defines(Split s);
 
@@ -49,6 +55,21 @@ struct SplitCosts {
     double threads = 0;        // T
 };
 constexpr double kChainCorrelation = 8.0; // tau
+
+// Whether the chains should render the MLT part at all (Split::Auto). Per-
+// pixel samples render it with a squared error, summed over pixels, of V_m
+// / n at n samples per pixel (V_m as V_o, for the MLT part), less by what
+// their stratification gains; the chains with tau b^2 P / n at n mutations
+// per pixel, a mutation costing about one path. So the chains pay where the
+// MLT part's per-pixel relative variance r = V_m / (P b^2) exceeds
+// kChainsPayRatio (tau times the stratification's gain). Measured at
+// 128x128 with the visible split (doc/RESULTS.md, "The split"): cornell has
+// r = 0.67 and the chains take 9.5 times PT's time to its error; ajar (15)
+// and cornell-glass (18) are level with PT; cornell-water (54) takes 0.43
+// of PT's time. The threshold lies between.
+constexpr double kChainsPayRatio = 4.0;
+double mlt_part_relative_variance(double mlt_variance, double b, double pixels);
+bool chains_pay(double relative_variance);
 // n_o, times `effort` (--omc-effort; 1 is the rule).
 double omc_samples_per_step(const SplitCosts& c, double effort);
 
