@@ -9,6 +9,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 using namespace smallmlt;
@@ -123,6 +124,16 @@ TEST(Split, FurnacePartsAreTheClosedForm) {
         EXPECT_NEAR(omc, want_omc, 0.003 * want_omc) << split_name(s);
         EXPECT_NEAR(chains, b, test::film_mean_tolerance(mlt) * b) << split_name(s);
         EXPECT_GT(mlt.omc_spp(), 0u) << split_name(s);
+        if (s == Split::Visible) {
+            // Every OMC-part sample is exactly Ke = 1, so each pixel is 1 when
+            // the burn-in's samples count in the pixels they landed in (with
+            // their expected count instead, pixels would scatter around 1).
+            Image part = mlt.part_image(MltRenderer::Part::Omc);
+            float worst = 0;
+            for (float v : part.rgb)
+                worst = std::max(worst, std::fabs(v - 1.0f));
+            EXPECT_LT(worst, 1e-5f) << "the OMC part's pixels are not all 1";
+        }
     }
 }
 

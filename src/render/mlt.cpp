@@ -64,14 +64,16 @@ std::uint64_t rng_key(std::uint64_t seed, std::uint32_t a, std::uint32_t b) {
 
 // Adds burn-in samples' parts (8 floats each: the OMC part's RGB, the
 // pixel's bits, the MLT part's RGB, rays; a dropped sample is 0) to their
-// pixels' sums; returns the sum of the OMC parts' squared luminances.
+// pixels' sums and counts; returns the sum of the OMC parts' squared
+// luminances.
 double add_burn_in_parts(const std::vector<float>& samples, std::vector<double>& omc,
-                         std::vector<double>& rest) {
+                         std::vector<double>& rest, std::vector<std::uint64_t>& count) {
     double sum2 = 0;
     for (std::size_t i = 0; i + 8 <= samples.size(); i += 8) {
         std::uint32_t pixel;
         std::memcpy(&pixel, &samples[i + 3], sizeof pixel);
         std::size_t at = 3 * std::size_t(pixel);
+        ++count.at(pixel);
         for (int c = 0; c < 3; ++c) {
             omc.at(at + c) += samples[i + c];
             rest.at(at + c) += samples[i + 4 + c];
@@ -181,6 +183,7 @@ MltRenderer::MltRenderer(const ClContext& cl, const DeviceScene& ds, const MltOp
     if (opt.split != Split::None) {
         burn_in_omc_.assign(3 * pixels(), 0.0);
         burn_in_rest_.assign(3 * pixels(), 0.0);
+        burn_in_count_.assign(pixels(), 0);
         omc_ = make_omc_part(split_ == Split::Auto ? kChainsSplit : split_);
     }
     state_.fill_zero(cl);
@@ -214,7 +217,7 @@ void MltRenderer::sample_starts() {
         }
         if (split) {
             omc.read(cl_, host_omc.data());
-            omc_sum2 += add_burn_in_parts(host_omc, burn_in_omc_, burn_in_rest_);
+            omc_sum2 += add_burn_in_parts(host_omc, burn_in_omc_, burn_in_rest_, burn_in_count_);
         }
         if (opt_.burn_in) picker.add_round(lum, host, m, scan, pick_seed, chains, picks_);
     }
@@ -494,6 +497,7 @@ Tally MltRenderer::tally() const {
     if (omc_) {
         Tally o = omc_->tally(); // sums per pixel and channel, then spp
         t.ints.push_back(o.ints.at(0));
+        t.ints.insert(t.ints.end(), burn_in_count_.begin(), burn_in_count_.end());
         t.reals.insert(t.reals.end(), o.reals.begin(), o.reals.end());
         t.reals.insert(t.reals.end(), burn_in_omc_.begin(), burn_in_omc_.end());
         if (split_ == Split::All) // the burn-in's whole paths
@@ -523,12 +527,13 @@ Image MltRenderer::image_of(const Tally& summed, bool mlt, bool omc) const {
             img.rgb[i] = float(double(summed.ints[i]) * scale);
     }
     if (omc && omc_) {
-        // Per-pixel samples and the burn-in's, M / P expected per pixel.
-        double spp = double(counts[5]) + double(counts[2]) / double(pixels());
+        // Per-pixel samples and the burn-in's that landed in the pixel.
+        const std::uint64_t* landed = counts + 6;
         const double *pt = summed.reals.data() + 1, *burn = pt + n;
-        if (spp > 0)
-            for (std::size_t i = 0; i < n; ++i)
-                img.rgb[i] += float((pt[i] + burn[i]) / spp);
+        for (std::size_t i = 0; i < n; ++i) {
+            double spp = double(counts[5]) + double(landed[i / 3]);
+            if (spp > 0) img.rgb[i] += float((pt[i] + burn[i]) / spp);
+        }
     }
     return img;
 }

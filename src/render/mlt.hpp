@@ -182,12 +182,17 @@ class MltRenderer : public Integrator {
     // ints: the film with what the chains owe, per pixel and channel in units
     // of 2^-FILM64_FRAC_BITS, then mutations, the burn-in's luminance sum
     // (MLT_B_FRAC_BITS fixed point) and sample count, the large steps' sum
-    // and count; reals: the burn-in's sum of squared luminances.
+    // and count; with a split, the OMC part's samples per pixel and the
+    // burn-in's samples that landed in each pixel. reals: the burn-in's sum
+    // of squared luminances; with a split, the OMC part's per-pixel sums and
+    // the burn-in's OMC parts (with Split::All, whole paths) summed per pixel.
     Tally tally() const override;
     // b * splats * pixels / mutations, b from the summed samples, plus the
     // OMC part of a split: per pixel, the sum of its per-pixel samples and
-    // of the burn-in's splats over spp + M / P (M burn-in samples, uniform
-    // over the P pixels: M / P of them are expected in each).
+    // of the burn-in's that landed in it, over spp + their count. Given the
+    // count, those are uniform in the pixel, so this is unbiased (dividing by
+    // the expected count M / P instead adds the count's noise: for the light
+    // seen directly, where every sample is the same, most of the error).
     Image image_from(const Tally& summed) const override;
     // One part of the image: the chains' (MLT) or the OMC part (black
     // without a split; the whole image with Split::All).
@@ -223,6 +228,7 @@ class MltRenderer : public Integrator {
     std::unique_ptr<PathTracer> omc_; // the OMC part's per-pixel samples (a split)
     // The burn-in's OMC and MLT parts, summed per pixel and channel.
     std::vector<double> burn_in_omc_, burn_in_rest_;
+    std::vector<std::uint64_t> burn_in_count_; // burn-in samples per pixel
     double omc_variance_ = 0, mlt_variance_ = 0; // V_o and V_m of split.hpp, from the burn-in
     std::uint32_t steps_run_ = 0;                // steps of the chains (none with Split::All)
     // The OMC part's path tracer for `split`.
