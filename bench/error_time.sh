@@ -37,7 +37,7 @@ flags() {
     *) echo "error_time.sh: unknown method $1" >&2; exit 2 ;;
     esac
 }
-METHODS=${METHODS:-pt mlt-none mlt-nosplit mlt-visible mlt-direct mlt mlt-k2 mlt-k4}
+METHODS=${METHODS:-pt mlt-nosplit mlt-direct mlt mlt-k2 mlt-k4}
 
 echo "device: $("$BIN" devices | sed -n '1p'), cores: $(nproc)" | tee "$OUT/machine.txt"
 echo "scene,method,mse_ratio,rel_mse_ratio,mse_unlit_ratio,block8_mse_ratio,pt_seconds,target_mse" > "$OUT/time_to_error.csv"

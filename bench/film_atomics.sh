@@ -14,7 +14,8 @@ OUT=$RESULTS/film_atomics
 mkdir -p "$OUT"
 echo "size,scene,mutations_per_s_64,mutations_per_s_32,ratio_32_over_64,atomics_per_mutation_64,atomics_per_mutation_32" > "$OUT/summary.csv"
 for size in $SIZES; do
-    RESULTS=$OUT/size$size SIZE=$size FLAGS_A="--film-atomics 64" FLAGS_B="--film-atomics 32" \
+    RESULTS=$OUT/size$size SIZE=$size FLAGS_A="--split none --film-atomics 64" \
+        FLAGS_B="--split none --film-atomics 32" \
         sh bench/ab_mutations.sh "$BIN" "$BIN" > /dev/null
     tail -n +2 "$OUT/size$size/ab_mutations/summary.csv" | sed "s/^/$size,/" >> "$OUT/summary.csv"
 done

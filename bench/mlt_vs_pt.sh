@@ -23,13 +23,13 @@ printf '%-16s %12s %16s %8s %14s\n' scene "PT M paths/s" "MLT M mutations/s" rat
 for scene in $SCENES; do
     common="scenes/$scene.scene --width $SIZE --height $SIZE --spp $SPP"
     "$BIN" render $common --method pt --out "$TMP/w.png" >/dev/null
-    "$BIN" render $common --method mlt --large-step "$LARGE_STEP" --threads "$THREADS" --out "$TMP/w.png" >/dev/null
+    "$BIN" render $common --method mlt --split none --large-step "$LARGE_STEP" --threads "$THREADS" --out "$TMP/w.png" >/dev/null
     : > "$TMP/pt"
     : > "$TMP/mlt"
     i=0
     while [ "$i" -lt "$RUNS" ]; do
         "$BIN" render $common --method pt --out "$TMP/r.png" >> "$TMP/pt"
-        "$BIN" render $common --method mlt --large-step "$LARGE_STEP" --threads "$THREADS" --out "$TMP/r.png" >> "$TMP/mlt"
+        "$BIN" render $common --method mlt --split none --large-step "$LARGE_STEP" --threads "$THREADS" --out "$TMP/r.png" >> "$TMP/mlt"
         i=$((i + 1))
     done
     pt=$(sed -n 's/.*, \([0-9.]*\) M paths\/s.*/\1/p' "$TMP/pt" | median)

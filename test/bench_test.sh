@@ -45,7 +45,7 @@ rows() { [ "$(tail -n +2 "$1" | wc -l)" -eq "$2" ]; }
 # png FILE: a PNG image
 png() { [ "$(head -c 4 "$1" | tail -c 3)" = PNG ]; }
 
-truth time_to_error_rows rows "$R/error_time/time_to_error.csv" 10
+truth time_to_error_rows rows "$R/error_time/time_to_error.csv" 12
 truth time_to_error_header [ "$(head -n 1 "$R/error_time/time_to_error.csv")" = "scene,method,mse_ratio,rel_mse_ratio,mse_unlit_ratio,block8_mse_ratio,pt_seconds,target_mse" ]
 truth time_to_error_pt_is_1 awk -F, 'NR > 1 && $2 == "pt" && $3 $4 $5 $6 != "1.0001.0001.0001.000" {exit 1}' "$R/error_time/time_to_error.csv"
 truth time_to_error_numbers awk -F, 'NR > 1 && !($3 + 0 > 0 && $4 + 0 > 0 && $5 + 0 > 0 && $6 + 0 > 0 && $7 + 0 > 0 && $8 + 0 > 0) {exit 1}' "$R/error_time/time_to_error.csv"
@@ -54,7 +54,7 @@ truth stuck_time_to_error_numbers awk -F, '!($3 + 0 > 0 && $4 + 0 > 0 && $5 + 0 
 masks() { for f in "$DIR"/cache/*s.pfm; do [ -s "${f%.pfm}-mask.pfm" ] || return 1; done; }
 truth reference_masks masks
 for scene in cornell cornell-water; do
-    truth "log_methods_$scene" [ "$(cut -d, -f1 "$R/error_time/$scene.csv" | tail -n +2 | sort -u | tr '\n' ' ')" = "mlt mlt-k2 mlt-k4 mlt-none pt " ]
+    truth "log_methods_$scene" [ "$(cut -d, -f1 "$R/error_time/$scene.csv" | tail -n +2 | sort -u | tr '\n' ' ')" = "mlt mlt-direct mlt-k2 mlt-k4 mlt-nosplit pt " ]
     truth "chart_$scene" png "$R/error_time/$scene.png"
 done
 truth threads_rows rows "$R/threads/threads.csv" 4

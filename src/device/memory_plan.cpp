@@ -32,19 +32,17 @@ bool is_chain_state(const std::string& name) {
     return name == "state" || name == "values";
 }
 
-// The bands of the film ("film band N") and of the OMC part's ("OMC film
-// band N").
 bool is_film(const std::string& name) {
-    return name.find("film band") != std::string::npos;
+    return name.rfind("film band", 0) == 0;
 }
 
 void add_film(MemoryPlan& p, std::uint64_t pixels, std::uint64_t bytes_per_pixel,
-              std::uint64_t max_alloc, const std::string& prefix = "") {
+              std::uint64_t max_alloc) {
     FilmBands split = film_bands(pixels, bytes_per_pixel, max_alloc);
     for (std::uint32_t b = 0; b < split.bands; ++b) {
         std::uint64_t first = b * split.band_pixels;
         std::uint64_t n = std::min(split.band_pixels, pixels - first);
-        p.buffers.push_back({prefix + "film band " + std::to_string(b), n * bytes_per_pixel, false});
+        p.buffers.push_back({"film band " + std::to_string(b), n * bytes_per_pixel, false});
     }
 }
 
@@ -90,9 +88,8 @@ std::uint64_t MemoryPlan::film() const {
 }
 
 std::uint32_t MemoryPlan::film_bands() const {
-    return std::uint32_t(std::count_if(buffers.begin(), buffers.end(), [](const PlannedBuffer& b) {
-        return b.name.rfind("film band", 0) == 0;
-    }));
+    return std::uint32_t(std::count_if(buffers.begin(), buffers.end(),
+                                       [](const PlannedBuffer& b) { return is_film(b.name); }));
 }
 
 FilmBands film_bands(std::uint64_t pixels, std::uint64_t bytes_per_pixel, std::uint64_t max_alloc) {
@@ -111,6 +108,11 @@ FilmBands film_bands(std::uint64_t pixels, std::uint64_t bytes_per_pixel, std::u
 
 std::uint64_t mlt_film_pixel_bytes(bool atomics64) {
     return 3 * (atomics64 ? sizeof(std::uint64_t) : sizeof(std::uint32_t));
+}
+
+std::uint64_t omc_scratch_pixels(std::uint64_t pixels) {
+    std::uint64_t whole = (pixels + kDefaultWorkGroup - 1) / kDefaultWorkGroup * kDefaultWorkGroup;
+    return std::min<std::uint64_t>(whole, 16384);
 }
 
 MemoryPlan plan_pt(const DeviceScene& ds, std::uint64_t max_alloc) {
@@ -141,9 +143,10 @@ MemoryPlan plan_mlt(const DeviceScene& ds, const ChainShape& shape, std::size_t 
     // Several buffers; their sum counts as one entry (at least as big as each).
     p.buffers.push_back({"scan blocks", scan_bytes(threads, scan_wg, sizeof(std::uint64_t)), true});
     if (shape.omc_part) {
-        // The OMC part's per-pixel sums and counters (src/render/path_tracer.hpp),
+        // The OMC part's scratch band and counters (src/render/path_tracer.hpp),
         // and the OMC part and pixel of each burn-in sample (cl/kernels_mlt.cl).
-        add_film(p, pixels(ds), kPtFilmPixelBytes, max_alloc, "OMC ");
+        p.buffers.push_back(
+            {"OMC scratch band", omc_scratch_pixels(pixels(ds)) * kPtFilmPixelBytes, false});
         p.buffers.push_back(
             {"OMC stats", group_rows(pixels(ds)) * PT_STAT_COUNT * sizeof(std::uint64_t), false});
         p.buffers.push_back({"OMC samples", threads * 8 * sizeof(float), true});

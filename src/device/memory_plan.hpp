@@ -26,8 +26,8 @@ struct MemoryPlan {
     std::uint64_t largest() const;                      // the biggest single buffer
     std::uint64_t bytes(const std::string& name) const; // requested size (0 if empty)
     std::uint64_t sum(bool chain_state) const;          // chain state buffers or the rest
-    std::uint64_t film() const;                         // the films' bands
-    std::uint32_t film_bands() const;                   // how many the MLT (or PT) film has
+    std::uint64_t film() const;                         // the film's bands
+    std::uint32_t film_bands() const;                   // how many there are
 };
 
 // What a render stores per chain and how many chains it has.
@@ -58,6 +58,10 @@ constexpr std::uint64_t kNoAllocLimit = ~std::uint64_t(0);
 
 // Bytes per pixel of the films on the device.
 constexpr std::uint64_t kPtFilmPixelBytes = 3 * sizeof(float);
+
+// Pixels of the OMC part's scratch band (a split; src/render/path_tracer.hpp):
+// at most 16,384 (192 KiB), a multiple of the work-group.
+std::uint64_t omc_scratch_pixels(std::uint64_t pixels);
 std::uint64_t mlt_film_pixel_bytes(bool atomics64);
 
 // Every buffer of a render whose film's bands fit max_alloc bytes each.

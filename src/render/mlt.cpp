@@ -10,7 +10,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <cstring>
 
 namespace smallmlt {
 
@@ -57,96 +56,7 @@ double fixed_lum(std::uint64_t v) {
     return double(v) / double(1u << MLT_B_FRAC_BITS);
 }
 
-// The kernels' rng_key (cl/rng.cl).
-std::uint64_t rng_key(std::uint64_t seed, std::uint32_t a, std::uint32_t b) {
-    return rng_mix64(seed + rng_mix64((std::uint64_t(a) << 32) | b));
-}
-
-// Adds burn-in samples' parts (8 floats each: the OMC part's RGB, the
-// pixel's bits, the MLT part's RGB, rays; a dropped sample is 0) to their
-// pixels' sums and counts; returns the sum of the OMC parts' squared
-// luminances.
-double add_burn_in_parts(const std::vector<float>& samples, std::vector<double>& omc,
-                         std::vector<double>& rest, std::vector<std::uint64_t>& count) {
-    double sum2 = 0;
-    for (std::size_t i = 0; i + 8 <= samples.size(); i += 8) {
-        std::uint32_t pixel;
-        std::memcpy(&pixel, &samples[i + 3], sizeof pixel);
-        std::size_t at = 3 * std::size_t(pixel);
-        ++count.at(pixel);
-        for (int c = 0; c < 3; ++c) {
-            omc.at(at + c) += samples[i + c];
-            rest.at(at + c) += samples[i + 4 + c];
-        }
-        double y = rgb_luminance(samples[i], samples[i + 1], samples[i + 2]);
-        sum2 += y * y;
-    }
-    return sum2;
-}
-
-// V_o (or V_m) of src/render/split.hpp from M burn-in samples, uniform over
-// the P pixels: their part's sums per pixel and channel and the sum of their
-// squared luminances. With Q = (P / M) sum f^2, an unbiased estimate of
-// sum_p E_p[f^2], and mu_p = (P / M) S_p, whose square overestimates
-// mu_p^2 by about (P / M) E_p[f^2], V_o = sum_p (E_p[f^2] - mu_p^2) is
-// about Q (1 + P / M) - sum_p mu_p^2.
-double part_variance(const std::vector<double>& sums, double sum2, double samples) {
-    const double pixels = double(sums.size() / 3), per = pixels / samples;
-    double mu2 = 0;
-    for (std::size_t p = 0; p < sums.size(); p += 3) {
-        double mu = per * rgb_luminance(sums[p], sums[p + 1], sums[p + 2]);
-        mu2 += mu * mu;
-    }
-    return std::max(0.0, per * sum2 * (1 + per) - mu2);
-}
-
 } // namespace
-
-std::uint64_t omc_round_seed(std::uint64_t omc_seed, std::uint32_t round) {
-    return derive_seed(omc_seed, round);
-}
-
-std::uint64_t omc_sample_key(std::uint64_t omc_seed, std::uint32_t round, std::uint32_t index) {
-    return rng_key(omc_round_seed(omc_seed, round), index, 0);
-}
-
-int burnin_weight_exponent(double sum) {
-    if (!(sum > 0) || !std::isfinite(sum)) return 0;
-    int e;
-    std::frexp(sum, &e); // sum < 2^e
-    return 62 - e;
-}
-
-std::uint64_t burnin_replace_threshold(double s, double total, std::uint32_t round) {
-    const double one = 4294967296.0;
-    if (!(total > 0)) return std::uint64_t(std::llround(one / (double(round) + 1)));
-    if (!(s > 0)) return 0;
-    if (s >= total) return std::uint64_t(one);
-    return std::min(std::uint64_t(one), std::uint64_t(std::llround(s / total * one)));
-}
-
-BurnInPicker::BurnInPicker(const ClContext& cl, cl_program program, std::uint32_t max_n)
-    : cl_(cl), scan_(cl, program, max_n, sizeof(cl_ulong)), weights_(program, "burnin_weights"),
-      pick_(program, "burnin_pick") {}
-
-void BurnInPicker::add_round(const ClBuffer& lum, const std::vector<float>& host, std::uint32_t n,
-                             const ClBuffer& scan, std::uint64_t seed, std::uint32_t count,
-                             const ClBuffer& picks) {
-    // The luminances burnin_weights keeps: finite and positive.
-    double sum = 0;
-    for (std::uint32_t i = 0; i < n; ++i)
-        if (std::isfinite(host[i]) && host[i] > 0) sum += host[i];
-    total_ += sum;
-    const std::uint32_t round = rounds_++;
-    std::uint64_t replace = burnin_replace_threshold(sum, total_, round);
-    if (replace == 0 || count == 0) return;
-    weights_.set_args(lum, cl_uint(n), cl_int(burnin_weight_exponent(sum)), scan);
-    weights_.enqueue(cl_, n);
-    scan_.run(scan, scan, n); // in place
-    pick_.set_args(scan, cl_uint(n), cl_ulong(seed), cl_uint(round), cl_ulong(replace),
-                   cl_uint(count), picks);
-    pick_.run(cl_, count);
-}
 
 void mlt_require_device(const DeviceInfo& d, const MltOptions& opt) {
     if (opt.film_atomics64 && !d.int64_atomics)
@@ -181,9 +91,7 @@ MltRenderer::MltRenderer(const ClContext& cl, const DeviceScene& ds, const MltOp
                           opt.film_pass_mutations)) {
     split_ = opt.split;
     if (opt.split != Split::None) {
-        burn_in_omc_.assign(3 * pixels(), 0.0);
-        burn_in_rest_.assign(3 * pixels(), 0.0);
-        burn_in_count_.assign(pixels(), 0);
+        burn_in_parts_ = BurnInParts(pixels());
         omc_ = make_omc_part(split_ == Split::Auto ? kChainsSplit : split_);
     }
     state_.fill_zero(cl);
@@ -202,7 +110,7 @@ void MltRenderer::sample_starts() {
     BurnInPicker picker(cl_, program_.p, m);
     std::vector<float> host(m), host_omc(split ? 8 * m : 0);
     std::uint64_t sum = 0;
-    double sum2 = 0, omc_sum2 = 0;
+    double sum2 = 0;
     cl_ulong omc_seed = derive_seed(opt_.seed, kPurposeOmc);
     cl_ulong pick_seed = derive_seed(opt_.seed, kPurposePick);
     for (std::uint32_t it = 0; it < iters; ++it) {
@@ -217,7 +125,7 @@ void MltRenderer::sample_starts() {
         }
         if (split) {
             omc.read(cl_, host_omc.data());
-            omc_sum2 += add_burn_in_parts(host_omc, burn_in_omc_, burn_in_rest_, burn_in_count_);
+            burn_in_parts_.add(host_omc);
         }
         if (opt_.burn_in) picker.add_round(lum, host, m, scan, pick_seed, chains, picks_);
     }
@@ -234,8 +142,8 @@ void MltRenderer::sample_starts() {
     burn_in_samples_ = std::uint64_t(m) * iters;
     burn_in_variance_ = n > 1 ? std::max(0.0, (sum2 / n - mean * mean) * n / (n - 1)) : 0;
     if (split) {
-        omc_variance_ = part_variance(burn_in_omc_, omc_sum2, n);
-        mlt_variance_ = part_variance(burn_in_rest_, sum2, n);
+        omc_variance_ = BurnInParts::variance(burn_in_parts_.omc, burn_in_parts_.omc_sum2, n);
+        mlt_variance_ = BurnInParts::variance(burn_in_parts_.rest, sum2, n);
     }
 }
 
@@ -288,7 +196,7 @@ double MltRenderer::mlt_relative_variance() const {
 
 std::unique_ptr<PathTracer> MltRenderer::make_omc_part(Split split) const {
     return std::make_unique<PathTracer>(cl_, ds_, derive_seed(opt_.seed, kPurposePixel),
-                                        OmcPart{split, &scene_}, max_alloc(cl_, opt_));
+                                        OmcPart{split, &scene_});
 }
 
 void MltRenderer::init_chains() {
@@ -369,7 +277,7 @@ void MltRenderer::omc_after_step(bool chains) {
 
 bool MltRenderer::finished() const {
     if (!prepared_ || burn_in_fixed_ > 0) return false;
-    return !omc_ || std::none_of(burn_in_omc_.begin(), burn_in_omc_.end(),
+    return !omc_ || std::none_of(burn_in_parts_.omc.begin(), burn_in_parts_.omc.end(),
                                  [](double v) { return v > 0; });
 }
 
@@ -497,12 +405,13 @@ Tally MltRenderer::tally() const {
     if (omc_) {
         Tally o = omc_->tally(); // sums per pixel and channel, then spp
         t.ints.push_back(o.ints.at(0));
-        t.ints.insert(t.ints.end(), burn_in_count_.begin(), burn_in_count_.end());
+        const BurnInParts& b = burn_in_parts_;
+        t.ints.insert(t.ints.end(), b.count.begin(), b.count.end());
         t.reals.insert(t.reals.end(), o.reals.begin(), o.reals.end());
-        t.reals.insert(t.reals.end(), burn_in_omc_.begin(), burn_in_omc_.end());
+        t.reals.insert(t.reals.end(), b.omc.begin(), b.omc.end());
         if (split_ == Split::All) // the burn-in's whole paths
-            for (std::size_t i = 0; i < burn_in_rest_.size(); ++i)
-                t.reals[t.reals.size() - burn_in_rest_.size() + i] += burn_in_rest_[i];
+            for (std::size_t i = 0; i < b.rest.size(); ++i)
+                t.reals[t.reals.size() - b.rest.size() + i] += b.rest[i];
     }
     return t;
 }

@@ -7,6 +7,7 @@
 #include "device/scan.hpp"
 #include "device/scene_buffers.hpp"
 #include "image/image.hpp"
+#include "render/burn_in.hpp"
 #include "render/integrator.hpp"
 #include "render/mlt_film.hpp"
 #include "render/path_tracer.hpp"
@@ -64,58 +65,6 @@ void mlt_require_device(const DeviceInfo& d, const MltOptions& opt);
 
 // Kernel files of the MLT program, in build order.
 std::vector<std::string> mlt_program_files(const MltOptions& opt);
-
-// OMC samples of a render are numbered by (round, index): round r < T of
-// burn-in (T = --burn-in-iters) draws indices 0..N-1, and the fresh starts of
-// --burn-in none are round T. Sample (r, i) is the path of key
-// rng_key(omc_round_seed(omc_seed, r), i, 0) (cl/rng.cl), so keys stay
-// distinct however many rounds of however many threads run (a single 32-bit
-// number r * N + i would wrap at 2^32 and repeat samples), and mlt_init
-// regenerates a picked path from its round's seed and its index.
-std::uint64_t omc_round_seed(std::uint64_t omc_seed, std::uint32_t round);
-// The key of sample (round, index), as the kernels make it.
-std::uint64_t omc_sample_key(std::uint64_t omc_seed, std::uint32_t round, std::uint32_t index);
-
-// The exponent e of the burn-in's fixed-point weights (cl/burnin.cl,
-// burnin_weights): the largest with sum * 2^e < 2^62, where sum is the sum
-// of a round's finite luminances (0 if it is not positive).
-int burnin_weight_exponent(double sum);
-
-// The reservoir's replacement threshold for a round of luminance sum s, when
-// the sums of all rounds so far, this one included, make `total`: 2^32 s /
-// total rounded (2^32: always), or, while total is 0 (no light yet),
-// 2^32 / (round + 1), so that picks stay uniform over all samples so far.
-std::uint64_t burnin_replace_threshold(double s, double total, std::uint32_t round);
-
-// The burn-in's chain starts, on the device, pooled over rounds by a
-// weighted reservoir (cl/burnin.cl): in each round, every chain replaces its
-// pick with probability s_r / (s_0 + .. + s_r) by a sample of the round
-// drawn in proportion to luminance (fixed-point weights, their prefix sum,
-// binary search). After the last round each chain's pick is an independent
-// draw from all the rounds' samples in proportion to luminance (uniform if
-// none had light).
-class BurnInPicker {
-  public:
-    // For rounds of up to max_n samples; `program` holds cl/rng.cl,
-    // cl/scan.cl (SCAN_T ulong) and cl/burnin.cl.
-    BurnInPicker(const ClContext& cl, cl_program program, std::uint32_t max_n);
-    // Adds the next round (round 0 first), of n samples whose luminances are
-    // `lum` on the device and `host` (the same values, read back): each of
-    // the `count` picks (uint2 (round, index) each, in `picks`) is replaced
-    // as above, with the streams of `seed` and the round. `scan` (n x 8
-    // bytes) is left holding the prefix sums of the round's weights.
-    void add_round(const ClBuffer& lum, const std::vector<float>& host, std::uint32_t n,
-                   const ClBuffer& scan, std::uint64_t seed, std::uint32_t count,
-                   const ClBuffer& picks);
-    std::uint32_t rounds() const { return rounds_; }
-
-  private:
-    const ClContext& cl_;
-    DeviceScan scan_;
-    ClKernel weights_, pick_;
-    std::uint32_t rounds_ = 0;
-    double total_ = 0; // luminance sum of the rounds so far
-};
 
 // A large step's or burn-in sample's luminance I in MLT_B_FRAC_BITS fixed
 // point (mlt_b_sample of cl/mlt_step.cl); 0 unless I > 0.
@@ -227,8 +176,7 @@ class MltRenderer : public Integrator {
     Split split_;
     std::unique_ptr<PathTracer> omc_; // the OMC part's per-pixel samples (a split)
     // The burn-in's OMC and MLT parts, summed per pixel and channel.
-    std::vector<double> burn_in_omc_, burn_in_rest_;
-    std::vector<std::uint64_t> burn_in_count_; // burn-in samples per pixel
+    BurnInParts burn_in_parts_; // with a split
     double omc_variance_ = 0, mlt_variance_ = 0; // V_o and V_m of split.hpp, from the burn-in
     std::uint32_t steps_run_ = 0;                // steps of the chains (none with Split::All)
     // The OMC part's path tracer for `split`.

@@ -36,17 +36,17 @@ PathTracer::PathTracer(const ClContext& cl, const DeviceScene& ds, std::uint64_t
 }
 
 PathTracer::PathTracer(const ClContext& cl, const DeviceScene& ds, std::uint64_t seed,
-                       const OmcPart& part, std::uint64_t max_alloc_bytes)
-    : cl_(cl), ds_(ds), seed_(seed), plan_(plan_pt(ds, max_alloc(cl, max_alloc_bytes))),
+                       const OmcPart& part)
+    : cl_(cl), ds_(ds), seed_(seed), plan_(plan_pt(ds, max_alloc(cl, 0))),
       program_(cl.build(pt_program_files(PtSampler::Sobol),
                         ds.layout.defines() + split_defines(part.split) +
                             "#define PT_OMC_PART 1\n")),
       kernel_(program_.p, "pt_render"), scene_(*part.scene),
       stats_(cl, CL_MEM_READ_WRITE, plan_.bytes("stats")),
-      band_pixels_(
-          film_bands(pixels(), kPtFilmPixelBytes, max_alloc(cl, max_alloc_bytes)).band_pixels),
-      sample_offset_(0), sample_stride_(1) {
-    allocate_film();
+      band_pixels_(omc_scratch_pixels(pixels())), sample_offset_(0), sample_stride_(1),
+      host_(3 * pixels(), 0.0) {
+    bands_.emplace_back(cl_, CL_MEM_READ_WRITE, band_pixels_ * kPtFilmPixelBytes);
+    stats_.fill_zero(cl_);
 }
 
 void PathTracer::allocate_film() {
@@ -62,12 +62,20 @@ void PathTracer::add_samples(std::uint32_t n) {
     if (n == 0) return;
     cl_ulong seed = seed_;
     cl_uint first_sample = spp_, count = n;
-    for (std::size_t b = 0; b < bands_.size(); ++b) {
-        std::uint64_t first = b * band_pixels_, size = std::min(band_pixels_, pixels() - first);
+    const bool scratch = !host_.empty();
+    std::vector<float> sums(scratch ? 3 * band_pixels_ : 0);
+    for (std::uint64_t first = 0, b = 0; first < pixels(); first += band_pixels_, ++b) {
+        std::uint64_t size = std::min(band_pixels_, pixels() - first);
+        const ClBuffer& band = bands_[scratch ? 0 : b];
+        if (scratch) band.fill_zero(cl_);
         kernel_.set_args(scene_.tris, scene_.nodes, scene_.mats, scene_.lights, ds_.frame, seed,
                          first_sample, count, cl_uint(sample_offset_), cl_uint(sample_stride_),
-                         cl_uint(first), cl_uint(size), bands_[b], stats_);
+                         cl_uint(first), cl_uint(size), band, stats_);
         kernel_.enqueue(cl_, size);
+        if (!scratch) continue;
+        band.read(cl_, sums.data());
+        for (std::size_t i = 0; i < 3 * size; ++i)
+            host_[3 * first + i] += sums[i];
     }
     cl_.finish("kernel pt_render over " + std::to_string(pixels()) + " pixels");
     spp_ += n;
@@ -112,6 +120,10 @@ std::uint64_t PathTracer::units_for_spp(std::uint32_t spp, int rank, int ranks) 
 Tally PathTracer::tally() const {
     Tally t;
     t.ints = {spp_};
+    if (!host_.empty()) {
+        t.reals = host_;
+        return t;
+    }
     t.reals.resize(3 * pixels());
     std::vector<float> sums;
     for (std::size_t b = 0; b < bands_.size(); ++b) {

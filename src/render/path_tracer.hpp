@@ -25,7 +25,10 @@ enum class PtSampler { Sobol, Random };
 std::vector<std::string> pt_program_files(PtSampler sampler);
 
 // Stratified per-pixel samples of the OMC part of a split (cl/path.cl), on
-// the scene buffers of the MLT render it belongs to.
+// the scene buffers of the MLT render it belongs to. Its film is on the host:
+// the device holds one scratch band of omc_scratch_pixels, rendered band by
+// band and added into the host's sums, so the split adds little to the
+// device's memory (src/device/memory_plan.hpp).
 struct OmcPart {
     Split split = Split::Direct;
     const SceneBuffers* scene = nullptr;
@@ -40,8 +43,7 @@ class PathTracer : public Integrator {
                PtSampler sampler = PtSampler::Sobol, std::uint64_t max_alloc_bytes = 0,
                std::uint32_t sample_offset = 0, std::uint32_t sample_stride = 1);
     // Renders only the OMC part of part.split (Sobol samples).
-    PathTracer(const ClContext& cl, const DeviceScene& ds, std::uint64_t seed, const OmcPart& part,
-               std::uint64_t max_alloc_bytes);
+    PathTracer(const ClContext& cl, const DeviceScene& ds, std::uint64_t seed, const OmcPart& part);
 
     void advance(std::uint32_t units) override { add_samples(units); }
     std::uint64_t units_for_spp(std::uint32_t spp, int rank, int ranks) const override;
@@ -75,6 +77,7 @@ class PathTracer : public Integrator {
     ClBuffer stats_;              // PT_STAT_COUNT per work-group
     std::uint64_t band_pixels_;
     std::uint32_t sample_offset_, sample_stride_;
+    std::vector<double> host_; // the OMC part's film (else empty: the film is bands_)
     // Sums of the rows of stats.
     std::uint64_t stat(int which) const;
     void allocate_film();

@@ -1,0 +1,87 @@
+// Burn-in by OMC (Frolov and Galaktionov, section 3.1): how its samples are
+// numbered, the weighted reservoir that picks the chains' starts on the
+// device (cl/burnin.cl), and what its paths leave for the split's OMC part.
+#pragma once
+#include "device/ocl.hpp"
+#include "device/scan.hpp"
+
+#include <cstdint>
+#include <vector>
+
+namespace smallmlt {
+
+// OMC samples of a render are numbered by (round, index): round r < T of
+// burn-in (T = --burn-in-iters) draws indices 0..N-1, and the fresh starts of
+// --burn-in none are round T. Sample (r, i) is the path of key
+// rng_key(omc_round_seed(omc_seed, r), i, 0) (cl/rng.cl), so keys stay
+// distinct however many rounds of however many threads run (a single 32-bit
+// number r * N + i would wrap at 2^32 and repeat samples), and mlt_init
+// regenerates a picked path from its round's seed and its index.
+std::uint64_t omc_round_seed(std::uint64_t omc_seed, std::uint32_t round);
+// The key of sample (round, index), as the kernels make it.
+std::uint64_t omc_sample_key(std::uint64_t omc_seed, std::uint32_t round, std::uint32_t index);
+
+// The exponent e of the burn-in's fixed-point weights (cl/burnin.cl,
+// burnin_weights): the largest with sum * 2^e < 2^62, where sum is the sum
+// of a round's finite luminances (0 if it is not positive).
+int burnin_weight_exponent(double sum);
+
+// The reservoir's replacement threshold for a round of luminance sum s, when
+// the sums of all rounds so far, this one included, make `total`: 2^32 s /
+// total rounded (2^32: always), or, while total is 0 (no light yet),
+// 2^32 / (round + 1), so that picks stay uniform over all samples so far.
+std::uint64_t burnin_replace_threshold(double s, double total, std::uint32_t round);
+
+// The burn-in's chain starts, on the device, pooled over rounds by a
+// weighted reservoir (cl/burnin.cl): in each round, every chain replaces its
+// pick with probability s_r / (s_0 + .. + s_r) by a sample of the round
+// drawn in proportion to luminance (fixed-point weights, their prefix sum,
+// binary search). After the last round each chain's pick is an independent
+// draw from all the rounds' samples in proportion to luminance (uniform if
+// none had light).
+class BurnInPicker {
+  public:
+    // For rounds of up to max_n samples; `program` holds cl/rng.cl,
+    // cl/scan.cl (SCAN_T ulong) and cl/burnin.cl.
+    BurnInPicker(const ClContext& cl, cl_program program, std::uint32_t max_n);
+    // Adds the next round (round 0 first), of n samples whose luminances are
+    // `lum` on the device and `host` (the same values, read back): each of
+    // the `count` picks (uint2 (round, index) each, in `picks`) is replaced
+    // as above, with the streams of `seed` and the round. `scan` (n x 8
+    // bytes) is left holding the prefix sums of the round's weights.
+    void add_round(const ClBuffer& lum, const std::vector<float>& host, std::uint32_t n,
+                   const ClBuffer& scan, std::uint64_t seed, std::uint32_t count,
+                   const ClBuffer& picks);
+    std::uint32_t rounds() const { return rounds_; }
+
+  private:
+    const ClContext& cl_;
+    DeviceScan scan_;
+    ClKernel weights_, pick_;
+    std::uint32_t rounds_ = 0;
+    double total_ = 0; // luminance sum of the rounds so far
+};
+
+// What the burn-in's paths leave for a split (src/render/split.hpp): per
+// pixel and channel the sums of their OMC and MLT parts, and per pixel how
+// many landed there (cl/kernels_mlt.cl, mlt_luminance, writes 8 floats per
+// path: the OMC part's RGB, the pixel's bits, the MLT part's RGB, its rays;
+// a dropped sample's parts are 0).
+struct BurnInParts {
+    std::vector<double> omc, rest;
+    std::vector<std::uint64_t> count;
+    double omc_sum2 = 0; // sum of the OMC parts' squared luminances
+    explicit BurnInParts(std::uint64_t pixels = 0)
+        : omc(3 * pixels, 0.0), rest(3 * pixels, 0.0), count(pixels, 0) {}
+    // Adds a round's paths, in sample order.
+    void add(const std::vector<float>& samples);
+    // V_o (or V_m) of split.hpp from M paths uniform over the P pixels: a
+    // part's sums per pixel and channel and the sum of its squared
+    // luminances. With Q = (P / M) sum f^2, an unbiased estimate of sum_p
+    // E_p[f^2], and mu_p = (P / M) S_p, whose square overestimates mu_p^2 by
+    // about (P / M) E_p[f^2], V = sum_p (E_p[f^2] - mu_p^2) is about
+    // Q (1 + P / M) - sum_p mu_p^2.
+    static double variance(const std::vector<double>& sums, double sum2, double samples);
+};
+
+} // namespace smallmlt
