@@ -32,7 +32,12 @@ PathTracer::PathTracer(const ClContext& cl, const DeviceScene& ds, std::uint64_t
       band_pixels_(
           film_bands(pixels(), kPtFilmPixelBytes, max_alloc(cl, max_alloc_bytes)).band_pixels),
       sample_offset_(sample_offset), sample_stride_(sample_stride) {
-    allocate_film();
+    for (std::uint64_t first = 0; first < pixels(); first += band_pixels_) {
+        bands_.emplace_back(cl_, CL_MEM_READ_WRITE,
+                            std::min(band_pixels_, pixels() - first) * kPtFilmPixelBytes);
+        bands_.back().fill_zero(cl_);
+    }
+    stats_.fill_zero(cl_);
 }
 
 PathTracer::PathTracer(const ClContext& cl, const DeviceScene& ds, std::uint64_t seed,
@@ -46,15 +51,6 @@ PathTracer::PathTracer(const ClContext& cl, const DeviceScene& ds, std::uint64_t
       band_pixels_(omc_scratch_pixels(pixels())), sample_offset_(0), sample_stride_(1),
       host_(3 * pixels(), 0.0) {
     bands_.emplace_back(cl_, CL_MEM_READ_WRITE, band_pixels_ * kPtFilmPixelBytes);
-    stats_.fill_zero(cl_);
-}
-
-void PathTracer::allocate_film() {
-    for (std::uint64_t first = 0; first < pixels(); first += band_pixels_) {
-        bands_.emplace_back(cl_, CL_MEM_READ_WRITE,
-                            std::min(band_pixels_, pixels() - first) * kPtFilmPixelBytes);
-        bands_.back().fill_zero(cl_);
-    }
     stats_.fill_zero(cl_);
 }
 

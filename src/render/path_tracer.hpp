@@ -80,7 +80,6 @@ class PathTracer : public Integrator {
     std::vector<double> host_; // the OMC part's film (else empty: the film is bands_)
     // Sums of the rows of stats.
     std::uint64_t stat(int which) const;
-    void allocate_film();
 };
 
 } // namespace smallmlt
