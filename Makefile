@@ -88,7 +88,7 @@ $(TEST_BIN): $(TEST_OBJ) $(BUILD)/libsmallmlt.a
 run: deps
 	$(MAKE) $(BIN)
 	@mkdir -p out
-	$(BIN) render scenes/cornell-water.scene --out out/cornell-water.png
+	$(BIN) render scenes/cornell-water.scene --time 40 --out out/cornell-water.png
 
 test: deps
 	$(MAKE) -j$(JOBS) $(BIN) $(TEST_BIN) $(MPI_BIN)

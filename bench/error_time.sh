@@ -32,6 +32,7 @@ flags() {
     mlt-direct-e*) echo "--method mlt --split direct --omc-effort ${1#mlt-direct-e} --threads $THREADS" ;;
     mlt) echo "--method mlt --threads $THREADS" ;;
     mlt-e*) echo "--method mlt --omc-effort ${1#mlt-e} --threads $THREADS" ;;
+    mlt-2stage) echo "--method mlt --target two-stage --threads $THREADS" ;;
     mlt-k2) echo "--method mlt --proposals 2 --threads $THREADS" ;;
     mlt-k4) echo "--method mlt --proposals 4 --threads $THREADS" ;;
     *) echo "error_time.sh: unknown method $1" >&2; exit 2 ;;
@@ -64,6 +65,7 @@ for scene in $SCENES; do
         "pt=PT" "mlt-none=MLT, no burn-in, no split, large step 0.5" \
         "mlt-nosplit=MLT, OMC burn-in, no split" "mlt-visible=MLT, split visible" \
         "mlt-direct=MLT, split direct" "mlt=MLT, split auto (default)" \
+        "mlt-2stage=MLT, split auto, two-stage target" \
         "mlt-k2=split-transition K = 2" "mlt-k4=split-transition K = 4"
     awk -F, -v scene="$scene" -f bench/median.awk -f bench/time_to_error.awk "$csv" >> "$OUT/time_to_error.csv"
 done

@@ -1,4 +1,5 @@
-/* A chain's ChainValue (cl/shared_types.h): F(x) of its current state x,
+/* A chain's ChainValue (cl/shared_types.h): G(x) = F(x) w(x) of its current
+ * state x (the contribution times the target's weight, cl/mlt_step.cl),
  * its live bounces, its run of rejections with the stuck mark, and the stay
  * weight x has gathered but not yet splatted. */
 
@@ -10,18 +11,18 @@ inline uint chain_run(ChainValue v) {
     return v.meta >> CHAIN_RUN_SHIFT;
 }
 
-inline float3 chain_f(ChainValue v) {
+inline float3 chain_g(ChainValue v) {
     return (float3)(v.rgb[0], v.rgb[1], v.rgb[2]);
 }
 
-/* The value of a chain started at a path with F = f and `bounces` live
+/* The value of a chain started at a path with G = f and `bounces` live
  * bounces: no rejections yet, not stuck. */
 inline ChainValue chain_started(float3 f, uint bounces) {
     ChainValue v = {{f.x, f.y, f.z}, bounces, 0u};
     return v;
 }
 
-/* The value of a chain that moved to a path with F = f and `bounces` live
+/* The value of a chain that moved to a path with G = f and `bounces` live
  * bounces: its run of rejections starts again, its stuck mark stays. */
 inline ChainValue chain_moved(ChainValue x, float3 f, uint bounces) {
     ChainValue v = {{f.x, f.y, f.z}, bounces | (x.meta & CHAIN_STUCK_BIT), 0u};

@@ -4,16 +4,19 @@
  * in mlt_step.cl, the film in film.cl. Every kernel runs in work-groups of
  * MLT_GROUP and counts into its group's row of stats. */
 
-/* Luminance I of the OMC path of each key rng_key(seed, first + i, 0): the
- * normalization b = E[I] is their mean. With a split (PATH_SPLIT > 0) the
- * path's parts go to omc[2 i] (xyz: the OMC part, RGB; w: the pixel's bits)
- * and omc[2 i + 1] (xyz: the MLT part; w: the rays traced), so that the
- * burn-in's paths also render the OMC part, and the host can tell how well
- * path tracing renders the MLT part (src/render/split.hpp). The host adds
- * them in sample order: no atomics, and the same sums every time. */
+/* The target I of the OMC path of each key rng_key(seed, first + i, 0): the
+ * normalization b = E[I] is their mean. With MLT_BURN_IN_SAMPLES (a split,
+ * or the two-stage target) the path's parts go to omc[2 i] (xyz: the OMC
+ * part, RGB; w: the pixel's bits) and omc[2 i + 1] (xyz: the MLT part; w:
+ * the rays traced), so that the burn-in's paths also render the OMC part,
+ * and the host can tell how well path tracing renders the MLT part
+ * (src/render/split.hpp) and weigh the two-stage target's cells
+ * (src/render/target.hpp). The host adds them in sample order: no atomics,
+ * and the same sums every time. */
 __kernel void mlt_luminance(__global const Triangle* tris, __global const BvhNode* nodes,
                             __global const Material* mats, __global const LightEntry* lights,
-                            const Frame frame, __global uint* state, const ulong seed,
+                            const Frame frame, __global const float* weight,
+                            const TargetCells cells, __global uint* state, const ulong seed,
                             const uint first, const uint count, __global float* lum,
                             __global float4* omc, __global ulong* stats) {
     __local uint l_count[MLT_COUNTS];
@@ -22,10 +25,11 @@ __kernel void mlt_luminance(__global const Triangle* tris, __global const BvhNod
     barrier(CLK_LOCAL_MEM_FENCE);
     if (i < count) {
         SceneView sc = path_scene(tris, nodes, mats, lights, &frame);
+        MltTarget target = mlt_target(weight, cells, &frame);
         SampleSource src = smp_chain(state, 0u, 1u, rng_key(seed, first + i, 0u), SMP_LARGE, 0u);
         EvalResult s = mlt_checked(eval_state(&sc, &frame, &src), &nonfinite);
-        lum[i] = path_luminance(s.f);
-#if PATH_SPLIT > 0
+        lum[i] = path_luminance(s.f) * mlt_weight(&target, s.pixel);
+#ifdef MLT_BURN_IN_SAMPLES
         omc[2u * i] = (float4)(s.omc, as_float(s.pixel));
         omc[2u * i + 1u] = (float4)(s.f, (float)s.rays);
 #endif
@@ -38,20 +42,21 @@ __kernel void mlt_luminance(__global const Triangle* tris, __global const BvhNod
  * the round seed is omc_round_seed(omc_seed, r) (src/render/mlt.cpp). */
 __kernel void mlt_init(__global const Triangle* tris, __global const BvhNode* nodes,
                        __global const Material* mats, __global const LightEntry* lights,
-                       const Frame frame, __global uint* state, __global ChainValue* values,
-                       const uint num_chains, const ulong omc_seed, __global const uint2* picks,
-                       __global ulong* stats) {
+                       const Frame frame, __global const float* weight, const TargetCells cells,
+                       __global uint* state, __global ChainValue* values, const uint num_chains,
+                       const ulong omc_seed, __global const uint2* picks, __global ulong* stats) {
     __local uint l_count[MLT_COUNTS];
     uint c = get_global_id(0), nonfinite = 0u;
     mlt_zero_counts(l_count);
     barrier(CLK_LOCAL_MEM_FENCE);
     if (c < num_chains) {
         SceneView sc = path_scene(tris, nodes, mats, lights, &frame);
+        MltTarget target = mlt_target(weight, cells, &frame);
         uint2 pick = picks[c];
         ulong round_seed = rng_mix64(omc_seed * 0x9E3779B97F4A7C15UL + (ulong)pick.x);
         SampleSource src =
             smp_chain(state, c, num_chains, rng_key(round_seed, pick.y, 0u), SMP_LARGE, 0u);
-        EvalResult s = mlt_checked(eval_state(&sc, &frame, &src), &nonfinite);
+        EvalResult s = mlt_evaluate(&sc, &frame, &src, &target, &nonfinite);
         smp_commit(&src, s.bounces);
         values[c] = chain_started(s.f, s.bounces);
     }
@@ -72,9 +77,10 @@ __kernel void mlt_init(__global const Triangle* tris, __global const BvhNode* no
  *    work-item commits its proposal. */
 __kernel void mlt_step(__global const Triangle* tris, __global const BvhNode* nodes,
                        __global const Material* mats, __global const LightEntry* lights,
-                       const Frame frame, __global uint* state, __global ChainValue* values,
-                       const uint num_threads, const uint proposals, const ulong seed,
-                       const uint iteration, const uint large_threshold, __global FilmWord* film0,
+                       const Frame frame, __global const float* weight, const TargetCells cells,
+                       __global uint* state, __global ChainValue* values, const uint num_threads,
+                       const uint proposals, const ulong seed, const uint iteration,
+                       const uint large_threshold, __global FilmWord* film0,
                        __global FilmWord* film1, __global FilmWord* film2, __global FilmWord* film3,
                        const FilmShape film_shape, __global ulong* stats, const uint stuck_run) {
     __local float l_a[MLT_GROUP];
@@ -84,6 +90,7 @@ __kernel void mlt_step(__global const Triangle* tris, __global const BvhNode* no
     MltThread th = mlt_thread(num_threads, proposals);
     uint c = th.active ? th.chain : 0u;
     SceneView sc = path_scene(tris, nodes, mats, lights, &frame);
+    MltTarget target = mlt_target(weight, cells, &frame);
     Film film = film_bind(film0, film1, film2, film3, film_shape);
     ChainValue x = values[c];
     ulong key = rng_key(seed, th.t, iteration);
@@ -94,7 +101,8 @@ __kernel void mlt_step(__global const Triangle* tris, __global const BvhNode* no
     float a = 0.0f;
     uint atomics = 0u, nonfinite = 0u;
     if (th.active)
-        a = mlt_try_proposal(&sc, &frame, &src, chain_f(x), &film, key, &y, &nonfinite, &atomics);
+        a = mlt_try_proposal(&sc, &frame, &src, &target, chain_g(x), &film, key, &y, &nonfinite,
+                             &atomics);
 
     l_a[th.lid] = a;
     mlt_zero_counts(l_count);
@@ -103,8 +111,8 @@ __kernel void mlt_step(__global const Triangle* tris, __global const BvhNode* no
         float stay = mlt_stay_weight(&l_a[th.first], proposals);
         uint next = mlt_select(&l_a[th.first], proposals, stay, mlt_select_number(key, proposals));
         l_next[th.lid] = next;
-        uint pending =
-            mlt_settle_stay(&frame, state, c, th.chains, x, stay, next != 0u, &film, key, &atomics);
+        uint pending = mlt_settle_stay(&frame, &target, state, c, th.chains, x, stay, next != 0u,
+                                       &film, key, &atomics);
         if (next == 0u)
             mlt_stay(&values[c], x, pending, stuck_run, l_count);
         else
@@ -127,17 +135,18 @@ __kernel void mlt_step(__global const Triangle* tris, __global const BvhNode* no
 #define MLT_OWED_ADD 0u
 #define MLT_OWED_UNDO 1u
 #define MLT_OWED_FLUSH 2u
-__kernel void mlt_owed(const Frame frame, __global const uint* state, __global ChainValue* values,
+__kernel void mlt_owed(const Frame frame, __global const float* weight, const TargetCells cells,
+                       __global const uint* state, __global ChainValue* values,
                        const uint num_chains, const ulong seed, const uint iteration,
                        __global FilmWord* film0, __global FilmWord* film1, __global FilmWord* film2,
                        __global FilmWord* film3, const FilmShape film_shape, const uint mode) {
     uint c = get_global_id(0);
     if (c >= num_chains) return;
     Film film = film_bind(film0, film1, film2, film3, film_shape);
+    MltTarget target = mlt_target(weight, cells, &frame);
     ChainValue x = values[c];
     if (!x.stay) return;
-    film_splat(&film, mlt_state_pixel(&frame, state, c, num_chains), chain_f(x),
-               chain_stay_weight(x.stay), rng_key(seed, c, iteration), MLT_DIM_ROUND_OWED,
-               mode == MLT_OWED_UNDO);
+    mlt_splat_state(&frame, &target, state, c, num_chains, x, chain_stay_weight(x.stay), &film,
+                    rng_key(seed, c, iteration), MLT_DIM_ROUND_OWED, mode == MLT_OWED_UNDO);
     if (mode == MLT_OWED_FLUSH) values[c].stay = 0u;
 }

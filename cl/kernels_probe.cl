@@ -36,6 +36,8 @@ __kernel void probe_layout(__global uint* out) {
     out[i++] = sizeof(ChainValue);
     out[i++] = PROBE_OFFSET(ChainValue, meta);
     out[i++] = PROBE_OFFSET(ChainValue, stay);
+    out[i++] = sizeof(TargetCells);
+    out[i++] = PROBE_OFFSET(TargetCells, columns);
 }
 
 /* Closest hit of each ray (origin xyz, tmax in o; direction in d):

@@ -1,14 +1,36 @@
 /* The parts of one Metropolis step of primary-sample-space MLT (Kelemen et
  * al. 2002) in the split-transition form of Frolov and Galaktionov (section
- * 3.3, Algorithm 1); cl/kernels_mlt.cl composes them. Splats use expected
+ * 3.3, Algorithm 1); cl/kernels_mlt.cl composes them. The target is
+ * I(x) = lum(F(x)) w(x), w the weight of x's pixel's cell (MltTarget; 1
+ * everywhere but for the two-stage target, src/render/target.hpp). A chain
+ * keeps G(x) = F(x) w(x), so that I(x) = lum(G(x)). Splats use expected
  * values: a proposal y adds a * F(y)/I(y) at its pixel and the chain's state
- * x adds its stay weight * F(x)/I(x) at x's, with a = min(1, I(y)/I(x)) and I
- * the luminance, so every splat has luminance equal to its weight. x's stay
- * weights are gathered in its ChainValue and splatted once, when the chain
- * moves away (MLT_EAGER_STAY, the reference build, splats them at every
- * step). Splats go to the film through 32-bit atomics (cl/film.cl); the
- * step's counters are summed per work-group in local memory and added to
- * the group's own row of stats, so the only global atomics are the film's. */
+ * x adds its stay weight * F(x)/I(x) at x's, with a = min(1, I(y)/I(x)), so
+ * every splat has luminance equal to its weight over w <= its weight. x's
+ * stay weights are gathered in its ChainValue and splatted once, when the
+ * chain moves away (MLT_EAGER_STAY, the reference build, splats them at
+ * every step). Splats go to the film through 32-bit atomics (cl/film.cl);
+ * the step's counters are summed per work-group in local memory and added
+ * to the group's own row of stats, so the only global atomics are the
+ * film's. */
+
+/* The target's weights: w >= 1 per cell of TargetCells. */
+typedef struct {
+    __global const float* weight;
+    TargetCells cells;
+    uint width; /* the film's, in pixels */
+} MltTarget;
+
+inline MltTarget mlt_target(__global const float* weight, TargetCells cells, const Frame* frame) {
+    MltTarget t = {weight, cells, frame->width};
+    return t;
+}
+
+/* w at a pixel. */
+inline float mlt_weight(const MltTarget* t, uint pixel) {
+    uint x = pixel % t->width, y = pixel / t->width;
+    return t->weight[(y >> t->cells.shift) * t->cells.columns + (x >> t->cells.shift)];
+}
 
 /* A work-group's counters in local memory, added to its row of stats once
  * per step. */
@@ -89,16 +111,26 @@ inline bool mlt_is_large(ulong key, uint large_threshold) {
     return rng_u32(key, MLT_DIM_LARGE) < large_threshold;
 }
 
-/* Evaluates the proposal y that src defines (lazily), splats a * F(y)/I(y)
- * at its pixel and returns a = min(1, I(y)/I(x)) (1 where I(x) = 0). */
-inline float mlt_try_proposal(const SceneView* sc, const Frame* frame, SampleSource* src, float3 fx,
-                              const Film* film, ulong key, EvalResult* y, uint* nonfinite,
-                              uint* atomics) {
-    float ix = path_luminance(fx);
-    *y = mlt_checked(eval_state(sc, frame, src), nonfinite);
+/* The proposal y that src defines, evaluated (lazily), with y.f = G(y). */
+inline EvalResult mlt_evaluate(const SceneView* sc, const Frame* frame, SampleSource* src,
+                               const MltTarget* target, uint* nonfinite) {
+    EvalResult y = mlt_checked(eval_state(sc, frame, src), nonfinite);
+    y.f *= mlt_weight(target, y.pixel);
+    return y;
+}
+
+/* Evaluates the proposal y (y->f = G(y)), splats a * F(y)/I(y) at its pixel
+ * and returns a = min(1, I(y)/I(x)) (1 where I(x) = 0), for a chain at x
+ * with G(x) = gx. */
+inline float mlt_try_proposal(const SceneView* sc, const Frame* frame, SampleSource* src,
+                              const MltTarget* target, float3 gx, const Film* film, ulong key,
+                              EvalResult* y, uint* nonfinite, uint* atomics) {
+    float ix = path_luminance(gx);
+    *y = mlt_evaluate(sc, frame, src, target, nonfinite);
     float iy = path_luminance(y->f);
     float a = ix > 0.0f ? fmin(1.0f, iy / ix) : 1.0f;
-    *atomics += film_splat(film, y->pixel, y->f, a, key, MLT_DIM_ROUND_Y, false);
+    *atomics += film_splat(film, y->pixel, y->f, a / mlt_weight(target, y->pixel), key,
+                           MLT_DIM_ROUND_Y, false);
     return a;
 }
 
@@ -116,6 +148,15 @@ inline uint mlt_state_pixel(const Frame* frame, __global const uint* state, uint
                             uint chains) {
     return eval_pixel(frame, pss_load(state, chain, chains, layout_film(0u)),
                       pss_load(state, chain, chains, layout_film(1u)));
+}
+
+/* Splats w * F(x)/I(x) at the pixel of chain's state x (subtracts it with
+ * `undo`); returns the global atomics it made. */
+inline uint mlt_splat_state(const Frame* frame, const MltTarget* target, __global const uint* state,
+                            uint chain, uint chains, ChainValue x, float w, const Film* film,
+                            ulong key, uint dim, bool undo) {
+    uint pixel = mlt_state_pixel(frame, state, chain, chains);
+    return film_splat(film, pixel, chain_g(x), w / mlt_weight(target, pixel), key, dim, undo);
 }
 
 /* The step's number for choosing the next state: uniform in [0, K). */
@@ -139,15 +180,15 @@ inline uint mlt_select(__local const float* a, uint proposals, float stay, float
  * splatted at x's pixel when the chain moves away or the weight reaches
  * MLT_STAY_FLUSH (with MLT_EAGER_STAY: at once). Returns the weight still
  * pending, in the fixed point of ChainValue.stay. */
-inline uint mlt_settle_stay(const Frame* frame, __global const uint* state, uint chain, uint chains,
-                            ChainValue x, float stay, bool moves, const Film* film, ulong key,
-                            uint* atomics) {
+inline uint mlt_settle_stay(const Frame* frame, const MltTarget* target, __global const uint* state,
+                            uint chain, uint chains, ChainValue x, float stay, bool moves,
+                            const Film* film, ulong key, uint* atomics) {
     uint pending = x.stay + chain_stay_fixed(stay);
 #ifndef MLT_EAGER_STAY
     if (!moves && pending < MLT_STAY_FLUSH) return pending;
 #endif
-    *atomics += film_splat(film, mlt_state_pixel(frame, state, chain, chains), chain_f(x),
-                           chain_stay_weight(pending), key, MLT_DIM_ROUND_X, false);
+    *atomics += mlt_splat_state(frame, target, state, chain, chains, x, chain_stay_weight(pending),
+                                film, key, MLT_DIM_ROUND_X, false);
     return 0u;
 }
 

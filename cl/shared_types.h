@@ -81,8 +81,9 @@ typedef struct {
     u32 num_lights;
 } Frame;
 
-/* A chain's value beside its packed numbers: F(x), the RGB contribution of
- * the path of its current state x, and in `meta`:
+/* A chain's value beside its packed numbers: G(x) = F(x) w(x), the RGB
+ * contribution of the path of its current state x times the target's weight
+ * at its pixel (cl/mlt_step.cl; lum(G) is the target I), and in `meta`:
  * - bits 0-7: how many bounces of x's numbers are live (the path scattered
  *   that many times; numbers of later bounces are dead and drawn afresh when
  *   a proposal reaches them);
@@ -119,6 +120,16 @@ typedef struct {
     u32 frac_bits;
     f32 scale;
 } FilmShape;
+
+/* The cells of the chains' target weight (cl/mlt_step.cl, mlt_weight):
+ * pixel (x, y) lies in cell (y >> shift) * columns + (x >> shift), of
+ * 2^shift x 2^shift pixels; the target is I = lum(F) times its cell's weight
+ * (src/render/target.hpp). One cell of weight 1 is the plain luminance.
+ * 8 bytes. */
+typedef struct {
+    u32 shift;
+    u32 columns;
+} TargetCells;
 
 #define FILM_MAX_BANDS 4
 #define FILM64_FRAC_BITS 24

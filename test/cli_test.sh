@@ -104,6 +104,8 @@ check method_bad 2 "--method: 'bdpt' is not a method" -- "$BIN" render scenes/co
 check split_name 2 "--split indirect: expected none, visible, direct, all or auto" -- "$BIN" render scenes/cornell.scene --split indirect
 check omc_effort_negative 2 "--omc-effort: '-1' is not a number >= 0" -- "$BIN" render scenes/cornell.scene --omc-effort -1
 check split_summary 0 "split visible: OMC part" -- "$BIN" render scenes/cornell.scene --split visible --threads 1024 --burn-in-iters 2 --width 16 --height 16 --spp 8 --out "$DIR/split.png"
+check target_name 2 "--target: 'kelemen' is not a target (luminance or two-stage)" -- "$BIN" render scenes/cornell.scene --target kelemen
+check target_summary 0 "target two-stage (" -- "$BIN" render scenes/cornell-water.scene --split visible --target two-stage --threads 1024 --burn-in-iters 4 --width 16 --height 16 --spp 8 --out "$DIR/two-stage.png"
 check large_step_range 2 "--large-step: '1.5' is not a probability" -- "$BIN" render scenes/cornell.scene --large-step 1.5
 check sampler_bad 2 "--sampler: 'halton' is not a sampler (sobol or random)" -- "$BIN" render scenes/cornell.scene --sampler halton
 check rr_threshold_zero 2 "--rr-threshold: '0' is not a positive number" -- "$BIN" render scenes/cornell.scene --rr-threshold 0

@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <map>
 #include <random>
 #include <set>
@@ -114,7 +115,7 @@ std::vector<cl_uint> pick(const std::vector<float>& w, std::uint32_t count,
     ClBuffer scan(cl, CL_MEM_READ_WRITE, w.size() * sizeof(cl_ulong));
     std::vector<cl_uint2> none(count, cl_uint2{{~0u, ~0u}});
     ClBuffer picks(cl, CL_MEM_READ_WRITE, count * sizeof(cl_uint2), none.data());
-    picker.add_round(lum, w, std::uint32_t(w.size()), scan, 12345, count, picks);
+    picker.add_round(lum, w, std::uint32_t(w.size()), scan, 12345, 0, count, picks);
     std::vector<cl_uint2> got(count);
     picks.read(cl, got.data());
     std::vector<cl_uint> out(count);
@@ -318,9 +319,9 @@ std::vector<cl_uint2> reservoir(const std::vector<std::vector<float>>& rounds, s
     ClBuffer scan(cl, CL_MEM_READ_WRITE, n * sizeof(cl_ulong));
     std::vector<cl_uint2> none(count, cl_uint2{{~0u, ~0u}});
     ClBuffer picks(cl, CL_MEM_READ_WRITE, count * sizeof(cl_uint2), none.data());
-    for (const std::vector<float>& w : rounds) {
-        lum.write(cl, w.data());
-        picker.add_round(lum, w, n, scan, seed, count, picks);
+    for (std::uint32_t r = 0; r < rounds.size(); ++r) {
+        lum.write(cl, rounds[r].data());
+        picker.add_round(lum, rounds[r], n, scan, seed, r, count, picks);
     }
     std::vector<cl_uint2> out(count);
     picks.read(cl, out.data());
@@ -511,4 +512,42 @@ TEST(BurnIn, RemovesMostOfTheStartupBias) {
     std::printf("MSE after 2 steps: without burn-in %.4g, with %.4g (ratio %.1f)\n", err[0], err[1],
                 err[0] / err[1]);
     EXPECT_GT(err[0], 3 * err[1]);
+}
+
+namespace {
+
+// One burn-in path as mlt_luminance writes it: grey OMC part o and MLT part
+// m (RGB all equal, so the luminance is the value) landing at `pixel`.
+void add_path(std::vector<float>& out, std::uint32_t pixel, float o, float m) {
+    float bits;
+    std::memcpy(&bits, &pixel, sizeof bits);
+    out.insert(out.end(), {o, o, o, bits, m, m, m, 1.0f});
+}
+
+} // namespace
+
+// V of split.hpp from the burn-in: P times the mean sample variance of the
+// pixels with two paths or more. Pixel 0: OMC parts 1, 3 (variance 2);
+// pixel 1: 5, 5, 8 (variance 3); pixel 2: one path (left out); pixel 3:
+// none. V = 4 x (2 + 3) / 2 = 10. The MLT parts are all 2: V = 0. With no
+// pixel of two paths: the second moment, P x mean f^2.
+TEST(BurnInParts, VarianceIsThePixelsSampleVariance) {
+    BurnInParts parts(4);
+    std::vector<float> round;
+    add_path(round, 0, 1, 2);
+    add_path(round, 1, 5, 2);
+    add_path(round, 0, 3, 2);
+    add_path(round, 2, 100, 2);
+    add_path(round, 1, 5, 2);
+    add_path(round, 1, 8, 2);
+    parts.add(round);
+    EXPECT_EQ(parts.count, (std::vector<std::uint64_t>{2, 3, 1, 0}));
+    EXPECT_NEAR(parts.variance(parts.omc, parts.omc_y2), 10.0, 1e-9);
+    EXPECT_NEAR(parts.variance(parts.rest, parts.rest_y2), 0.0, 1e-9);
+    BurnInParts sparse(4);
+    round.clear();
+    add_path(round, 0, 1, 0);
+    add_path(round, 3, 3, 0);
+    sparse.add(round);
+    EXPECT_NEAR(sparse.variance(sparse.omc, sparse.omc_y2), 4.0 * (1 + 9) / 2, 1e-9);
 }

@@ -59,7 +59,7 @@ double sin2_sum(double j0, double j1, double n) {
 // 2^-24 grid, each bounce slot on its own). All weights are "per unit
 // volume": sums over grid points divided by the number of grid points.
 // doc/testing.md derives each of them.
-struct Target {
+struct KnownTarget {
     static constexpr double kN24 = 16777216.0, kN16 = 65536.0;
     static constexpr double kQ[2] = {0.5, 0.75}; // continuation phase threshold, left / right
 
@@ -72,7 +72,7 @@ struct Target {
     double G[2] = {};                  // weight of the film's left / right half
     double Z = 0;                      // sum over the grid of F / grid size = b
 
-    explicit Target(const SampleLayout& l) : layout(l) {
+    explicit KnownTarget(const SampleLayout& l) : layout(l) {
         H = h_stripes(0, 64);
         E = H;
         for (int s = 0; s < kSlotCount; ++s) {
@@ -280,14 +280,14 @@ bool host_go_on(float c, float q) { // and its phase
 }
 
 TEST(ChainTargetMath, ClosedFormsEqualGridSums) {
-    const Target tg(make_layout(target_features()));
+    const KnownTarget tg(make_layout(target_features()));
     // h over the 24-bit grid, per (16 bins x parity) cell of a_0.
     std::vector<double> h_cells(32, 0.0);
     for (std::uint32_t i = 0; i < (1u << 24); ++i)
         h_cells[(i >> 20) * 2 + ((i >> 18) & 1u)] += host_h(float(i) / 16777216.0f);
     for (int j = 0; j < 32; ++j)
-        EXPECT_NEAR(h_cells[j] / Target::kN24,
-                    Target::h_stripes(4 * (j / 2), 4 * (j / 2) + 4, j % 2), 1e-12)
+        EXPECT_NEAR(h_cells[j] / KnownTarget::kN24,
+                    KnownTarget::h_stripes(4 * (j / 2), 4 * (j / 2) + 4, j % 2), 1e-12)
             << "a_0 cell " << j;
     // p(c) and the continuation over the 16-bit grid, per side and quarter.
     for (int side = 0; side < 2; ++side) {
@@ -295,26 +295,26 @@ TEST(ChainTargetMath, ClosedFormsEqualGridSums) {
         for (std::uint32_t j = 0; j < (1u << 16); ++j) {
             float c = float(j) / 65536.0f;
             double p = host_p(c);
-            (host_go_on(c, float(Target::kQ[side])) ? lt : ge) += p / Target::kN16;
-            quarter[(j >> 9) & 3u] += p / Target::kN16;
+            (host_go_on(c, float(KnownTarget::kQ[side])) ? lt : ge) += p / KnownTarget::kN16;
+            quarter[(j >> 9) & 3u] += p / KnownTarget::kN16;
         }
         EXPECT_NEAR(lt, tg.p_lt[side], 1e-12) << "side " << side;
         EXPECT_NEAR(ge, tg.p_ge[side], 1e-12) << "side " << side;
         for (int ph = 0; ph < 4; ++ph)
-            EXPECT_NEAR(quarter[ph], Target::p_phase(0, 32, ph), 1e-12) << "quarter " << ph;
+            EXPECT_NEAR(quarter[ph], KnownTarget::p_phase(0, 32, ph), 1e-12) << "quarter " << ph;
     }
     // g s(x, 64) over the film grid, per axis (a product off the zero corner),
     // x per (bin of 4, stripe parity), y per bin of 8.
     std::vector<double> gx(8, 0.0), gy(8, 0.0);
     for (std::uint32_t i = 0; i < (1u << 24); ++i) {
-        double u = i / Target::kN24, s = std::sin(2 * M_PI * u);
-        gx[(i >> 22) * 2 + ((i >> 18) & 1u)] += (1 + 3 * u) * host_sx(float(u)) / Target::kN24;
-        gy[i >> 21] += (1 + s * s) / Target::kN24;
+        double u = i / KnownTarget::kN24, s = std::sin(2 * M_PI * u);
+        gx[(i >> 22) * 2 + ((i >> 18) & 1u)] += (1 + 3 * u) * host_sx(float(u)) / KnownTarget::kN24;
+        gy[i >> 21] += (1 + s * s) / KnownTarget::kN24;
     }
     for (int bx = 0; bx < 4; ++bx)
         for (int by = 0; by < 8; ++by)
             for (int par = 0; par < 2; ++par)
-                EXPECT_NEAR(Target::film(bx, 4, by, 8, par),
+                EXPECT_NEAR(KnownTarget::film(bx, 4, by, 8, par),
                             bx < 1 && by < 2 ? 0.0 : gx[bx * 2 + par] * gy[by], 1e-12)
                     << "film cell " << bx << ", " << by << ", parity " << par;
     // The lengths' weights add up to the whole: sum_l W_l = V_0 per side.
@@ -392,7 +392,7 @@ TEST_P(ChainTarget, StatesFollowTheClosedFormMarginals) {
     const ChainCase cc = GetParam();
     const DeviceScene ds = test::layout_only_scene(target_features(), 8, 8);
     const SampleLayout& l = ds.layout;
-    const Target tg(l);
+    const KnownTarget tg(l);
     MltOptions opt;
     opt.proposals = cc.proposals;
     opt.threads = cc.chains * cc.proposals;
@@ -425,12 +425,12 @@ TEST_P(ChainTarget, StatesFollowTheClosedFormMarginals) {
     st[0].cells = 64;
     for (int j = 0; j < 64; ++j) {
         int par = j % 2, bx = (j / 2) % 4, by = j / 8;
-        st[0].p.push_back(Target::film(bx, 4, by, 8, par) * tg.V[0][bx >= 2] / tg.Z);
+        st[0].p.push_back(KnownTarget::film(bx, 4, by, 8, par) * tg.V[0][bx >= 2] / tg.Z);
     }
     st[1].name = "a_0 (24-bit): 16 bins x stripe parity";
     st[1].cells = 32;
     for (int j = 0; j < 32; ++j)
-        st[1].p.push_back(Target::h_stripes(4 * (j / 2), 4 * (j / 2) + 4, j % 2) / tg.H);
+        st[1].p.push_back(KnownTarget::h_stripes(4 * (j / 2), 4 * (j / 2) + 4, j % 2) / tg.H);
     st[2].name = "c_0 (16-bit): 8 bins x phase quarter";
     st[2].cells = 32;
     for (int j = 0; j < 32; ++j) {
@@ -446,8 +446,8 @@ TEST_P(ChainTarget, StatesFollowTheClosedFormMarginals) {
     st[4].name = "film column x c_0 phase quarter";
     st[4].cells = 32;
     for (int j = 0; j < 32; ++j) {
-        int bx = j % 8, ph = j / 8, side = Target::side_of_column(bx, 8);
-        st[4].p.push_back(Target::film_column(bx, 8) * tg.c0_weight(0, 32, ph, side) / tg.Z);
+        int bx = j % 8, ph = j / 8, side = KnownTarget::side_of_column(bx, 8);
+        st[4].p.push_back(KnownTarget::film_column(bx, 8) * tg.c0_weight(0, 32, ph, side) / tg.Z);
     }
     st[5].name = "L x a_1 (24-bit): 8 bins x parity";
     st[5].cells = 1 + (kDepth - 1) * 16;
@@ -455,7 +455,7 @@ TEST_P(ChainTarget, StatesFollowTheClosedFormMarginals) {
     for (int len = 2; len <= kDepth; ++len)
         for (int j = 0; j < 16; ++j)
             st[5].p.push_back((tg.G[0] * tg.W[len][0] + tg.G[1] * tg.W[len][1]) / tg.Z *
-                              Target::h_stripes(8 * (j / 2), 8 * (j / 2) + 8, j % 2) / tg.H);
+                              KnownTarget::h_stripes(8 * (j / 2), 8 * (j / 2) + 8, j % 2) / tg.H);
     for (auto& s : st) {
         double sum = 0;
         for (double p : s.p)
@@ -566,7 +566,7 @@ TEST_P(ChainTargetSplat, ImageMatchesThePerPixelIntegral) {
     const SplatCase sc = GetParam();
     const int bins = 4, pixels = bins * bins, values = 2 * pixels + 1;
     const DeviceScene ds = test::layout_only_scene(target_features(), bins, bins);
-    const Target tg(ds.layout);
+    const KnownTarget tg(ds.layout);
     const std::uint32_t replicas = sc.replicas;
     // Value i < pixels: pixel i of image(); i = pixels: the image mean;
     // pixels + 1 + j: pixel j of image() / b.

@@ -169,7 +169,7 @@ INSTANTIATE_TEST_SUITE_P(Proposals, MltSampler, ::testing::Values(1u, 2u, 4u, 8u
 // B bins has mean B (R-1)/(R-3) and variance B Var(t^2). T must stay below
 // its mean plus 3.3 standard deviations (about 0.001 one-sided), and bins
 // where the target is zero get exactly nothing.
-TEST(MltSplat, SplatImageMatchesTheTarget) {
+void check_splat_image(Target target) {
     const int bins = 16, replicas = 16;
     DeviceScene ds = test::layout_only_scene({}, bins, bins);
     std::vector<double> sum(bins * bins, 0.0), sum2(bins * bins, 0.0);
@@ -180,6 +180,7 @@ TEST(MltSplat, SplatImageMatchesTheTarget) {
         opt.seed = 100 + r;
         opt.burn_in_iters = 64; // b from 2^16 samples
         opt.evaluator = "cl/eval_target.cl";
+        opt.target = target;
         MltRenderer mlt(test::cl(), ds, opt);
         mlt.prepare();
         mlt.step(400);
@@ -213,6 +214,17 @@ TEST(MltSplat, SplatImageMatchesTheTarget) {
     double limit = used * mean_t2 + 3.3 * std::sqrt(used * var_t2);
     std::printf("T = %.1f, expected %.1f, limit %.1f\n", t_stat, used * mean_t2, limit);
     EXPECT_LT(t_stat, limit) << "sum of squared z over " << used << " bins";
+}
+
+TEST(MltSplat, SplatImageMatchesTheTarget) {
+    check_splat_image(Target::Luminance);
+}
+
+// The two-stage target (src/render/target.hpp) changes where the chains go,
+// not the image: its weights here range over 16 cells of 4 x 4 bins, one of
+// them (where g = 0) at the floor.
+TEST(MltSplat, TwoStageImageMatchesTheTarget) {
+    check_splat_image(Target::TwoStage);
 }
 
 // MLT renders against PT, block by block, and b against PT's mean:

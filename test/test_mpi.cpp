@@ -35,6 +35,7 @@ class FakeRank : public RankGroup {
     bool all(bool mine) override { return mine; }
     void sum_to_root(std::vector<std::uint64_t>&) override {}
     void sum_to_root(std::vector<double>&) override {}
+    void sum_all(std::vector<double>&) override {}
     std::vector<std::string> gather(const std::string& mine) override { return {mine}; }
 
   private:

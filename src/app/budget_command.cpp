@@ -117,6 +117,7 @@ int run_budget(const BudgetOptions& o) {
     ChainShape shape;
     shape.proposals = o.proposals;
     shape.omc_part = o.split != Split::None;
+    shape.target_cells = o.target == Target::TwoStage ? kTargetMaxCells : 1;
     if (o.threads) {
         shape.threads = *o.threads;
         check_chain_shape(shape);

@@ -88,6 +88,11 @@ MLT options:
                      rest well (doc/design.md, "The split")
   --omc-effort F     F times the OMC part's share of time that the split's rule
                      gives it (default 1; doc/design.md, "The split")
+  --target luminance|two-stage  the chains' target: the luminance of what they
+                     render (the default), or that divided by a coarse image
+                     of it from the first half of burn-in, so that dim regions
+                     get as many mutations per pixel as bright ones
+                     (doc/design.md, "The target")
   --large-step P     probability that a mutation draws a whole new path
                      (default 0.1 with burn-in, 0.5 without)
   --stuck-run R      a chain that rejects R proposals in a row counts as stuck
@@ -103,6 +108,7 @@ Budget options:
   --proposals K      proposals per chain: N threads keep N/K chain states (default 1)
   --split none|visible|direct|all|auto  as for render (a split adds the OMC
                      part's film)
+  --target luminance|two-stage  as for render (two-stage adds its weights)
   --depth D          report depths 1..D (default: the scene's depth)
   --width W, --height H  the film (overrides the scene)
   --device-mem BYTES as for render
@@ -248,6 +254,8 @@ RenderOptions parse_render(ArgReader& r) {
             o.large_step = float(to_unit_interval(flag, r.value(flag, arg)));
         } else if (flag == "--split") {
             o.split = parse_split(flag, r.value(flag, arg));
+        } else if (flag == "--target") {
+            o.target = parse_target(flag, r.value(flag, arg));
         } else if (flag == "--omc-effort") {
             o.omc_effort = to_non_negative(flag, r.value(flag, arg));
         } else if (flag == "--stuck-run") {
@@ -361,6 +369,8 @@ BudgetOptions parse_budget(ArgReader& r) {
             o.proposals = to_proposals(flag, r.value(flag, arg));
         } else if (flag == "--split") {
             o.split = parse_split(flag, r.value(flag, arg));
+        } else if (flag == "--target") {
+            o.target = parse_target(flag, r.value(flag, arg));
         } else if (flag == "--depth") {
             o.depth = int(to_int(flag, r.value(flag, arg), 1, kMaxDepth));
         } else if (flag == "--device-mem") {

@@ -27,6 +27,7 @@ struct RenderOptions {
     std::optional<std::string> profile; // --profile: a device of doc/devices.md
     bool film_atomics64 = false;        // --film-atomics 64
     Split split = kDefaultSplit;        // --split
+    Target target = kDefaultTarget;     // --target
     double omc_effort = 1.0;            // --omc-effort
     bool burn_in = true;
     std::uint32_t burn_in_iters = MltOptions().burn_in_iters;
@@ -56,6 +57,7 @@ struct BudgetOptions {
     std::optional<std::uint32_t> threads; // unset: auto
     std::uint32_t proposals = 1;
     Split split = kDefaultSplit;
+    Target target = kDefaultTarget;
     std::optional<int> depth;
     std::optional<std::uint64_t> device_mem;
     std::optional<std::string> profile;

@@ -66,6 +66,7 @@ std::uint32_t fit_to_device(const RenderOptions& o, const ClContext& cl, const D
     shape.proposals = o.proposals;
     shape.film_atomics64 = o.film_atomics64;
     shape.omc_part = o.split != Split::None;
+    shape.target_cells = o.target == Target::TwoStage ? kTargetMaxCells : 1;
     if (o.threads) {
         shape.threads = *o.threads;
         check_chain_shape(shape);
@@ -110,6 +111,7 @@ std::unique_ptr<Integrator> make_integrator(const RenderOptions& o, const ClCont
     m.stuck_run = o.stuck_run;
     m.film_atomics64 = o.film_atomics64;
     m.split = o.split;
+    m.target = o.target;
     m.omc_effort = o.omc_effort;
     return std::make_unique<MltRenderer>(cl, ds, m);
 }

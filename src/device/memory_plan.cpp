@@ -137,20 +137,23 @@ MemoryPlan plan_mlt(const DeviceScene& ds, const ChainShape& shape, std::size_t 
         {"stats", group_rows(threads) * MLT_STAT_COUNT * sizeof(std::uint64_t), false});
     // Each chain's start, (round, index) (cl/burnin.cl).
     p.buffers.push_back({"picks", chains * 2 * sizeof(std::uint32_t), false});
+    p.buffers.push_back({"target weights", shape.target_cells * sizeof(float), false});
     p.buffers.push_back({"luminance", threads * sizeof(float), true});
     // The burn-in's 64-bit fixed-point weights, scanned in place (cl/burnin.cl).
     p.buffers.push_back({"scan", threads * sizeof(std::uint64_t), true});
     // Several buffers; their sum counts as one entry (at least as big as each).
     p.buffers.push_back({"scan blocks", scan_bytes(threads, scan_wg, sizeof(std::uint64_t)), true});
     if (shape.omc_part) {
-        // The OMC part's scratch band and counters (src/render/path_tracer.hpp),
-        // and the OMC part and pixel of each burn-in sample (cl/kernels_mlt.cl).
+        // The OMC part's scratch band and counters (src/render/path_tracer.hpp).
         p.buffers.push_back(
             {"OMC scratch band", omc_scratch_pixels(pixels(ds)) * kPtFilmPixelBytes, false});
         p.buffers.push_back(
             {"OMC stats", group_rows(pixels(ds)) * PT_STAT_COUNT * sizeof(std::uint64_t), false});
-        p.buffers.push_back({"OMC samples", threads * 8 * sizeof(float), true});
     }
+    // The parts and pixel of each burn-in sample (cl/kernels_mlt.cl): for a
+    // split, and for the two-stage target's weights.
+    if (shape.omc_part || shape.target_cells > 1)
+        p.buffers.push_back({"OMC samples", threads * 8 * sizeof(float), true});
     return p;
 }
 

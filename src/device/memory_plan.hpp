@@ -35,8 +35,9 @@ struct ChainShape {
     std::uint32_t threads = 1u << 16;
     std::uint32_t proposals = 1; // K: threads per chain
     bool float32_states = false;
-    bool film_atomics64 = false; // the 64-bit reference film (MltOptions)
-    bool omc_part = false;       // a split: the OMC part's film and counters too
+    bool film_atomics64 = false;    // the 64-bit reference film (MltOptions)
+    bool omc_part = false;          // a split: the OMC part's film and counters too
+    std::uint32_t target_cells = 1; // weights of the chains' target (src/render/target.hpp)
     std::uint32_t chains() const { return threads / proposals; }
 };
 

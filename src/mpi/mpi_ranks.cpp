@@ -65,6 +65,15 @@ void MpiRanks::sum_to_root(std::vector<double>& v) {
     reduce_sum(v, MPI_DOUBLE, rank_);
 }
 
+void MpiRanks::sum_all(std::vector<double>& v) {
+    // Rank 0's sums, broadcast: every rank gets the same bits.
+    reduce_sum(v, MPI_DOUBLE, rank_);
+    for (std::size_t at = 0; at < v.size(); at += kChunk) {
+        int n = int(std::min(kChunk, v.size() - at));
+        check(MPI_Bcast(v.data() + at, n, MPI_DOUBLE, 0, MPI_COMM_WORLD), "MPI_Bcast");
+    }
+}
+
 std::vector<std::string> MpiRanks::gather(const std::string& mine) {
     int len = int(std::min<std::size_t>(mine.size(), INT_MAX));
     std::vector<int> lens(rank_ == 0 ? std::size_t(size_) : 0);

@@ -18,6 +18,7 @@ class MpiRanks : public RankGroup {
     bool all(bool mine) override;
     void sum_to_root(std::vector<std::uint64_t>& v) override;
     void sum_to_root(std::vector<double>& v) override;
+    void sum_all(std::vector<double>& v) override;
     std::vector<std::string> gather(const std::string& mine) override;
 
   private:

@@ -46,15 +46,14 @@ BurnInPicker::BurnInPicker(const ClContext& cl, cl_program program, std::uint32_
       pick_(program, "burnin_pick") {}
 
 void BurnInPicker::add_round(const ClBuffer& lum, const std::vector<float>& host, std::uint32_t n,
-                             const ClBuffer& scan, std::uint64_t seed, std::uint32_t count,
-                             const ClBuffer& picks) {
+                             const ClBuffer& scan, std::uint64_t seed, std::uint32_t round,
+                             std::uint32_t count, const ClBuffer& picks) {
     // The luminances burnin_weights keeps: finite and positive.
     double sum = 0;
     for (std::uint32_t i = 0; i < n; ++i)
         if (std::isfinite(host[i]) && host[i] > 0) sum += host[i];
     total_ += sum;
-    const std::uint32_t round = rounds_++;
-    std::uint64_t replace = burnin_replace_threshold(sum, total_, round);
+    std::uint64_t replace = burnin_replace_threshold(sum, total_, rounds_++);
     if (replace == 0 || count == 0) return;
     weights_.set_args(lum, cl_uint(n), cl_int(burnin_weight_exponent(sum)), scan);
     weights_.enqueue(cl_, n);
@@ -74,19 +73,28 @@ void BurnInParts::add(const std::vector<float>& samples) {
             omc.at(at + c) += samples[i + c];
             rest.at(at + c) += samples[i + 4 + c];
         }
-        double y = rgb_luminance(samples[i], samples[i + 1], samples[i + 2]);
-        omc_sum2 += y * y;
+        double yo = rgb_luminance(samples[i], samples[i + 1], samples[i + 2]);
+        double yr = rgb_luminance(samples[i + 4], samples[i + 5], samples[i + 6]);
+        omc_y2[pixel] += yo * yo;
+        rest_y2[pixel] += yr * yr;
     }
 }
 
-double BurnInParts::variance(const std::vector<double>& sums, double sum2, double samples) {
-    const double pixels = double(sums.size() / 3), per = pixels / samples;
-    double mu2 = 0;
-    for (std::size_t p = 0; p < sums.size(); p += 3) {
-        double mu = per * rgb_luminance(sums[p], sums[p + 1], sums[p + 2]);
-        mu2 += mu * mu;
+double BurnInParts::variance(const std::vector<double>& sums, const std::vector<double>& y2) const {
+    const std::size_t pixels = count.size();
+    double within = 0, moment = 0, samples = 0;
+    std::size_t used = 0;
+    for (std::size_t p = 0; p < pixels; ++p) {
+        const double n = double(count[p]);
+        moment += y2[p];
+        samples += n;
+        if (count[p] < 2) continue;
+        double y = rgb_luminance(sums[3 * p], sums[3 * p + 1], sums[3 * p + 2]);
+        within += std::max(0.0, (y2[p] - y * y / n) / (n - 1));
+        ++used;
     }
-    return std::max(0.0, per * sum2 * (1 + per) - mu2);
+    if (used > 0) return double(pixels) * within / double(used);
+    return samples > 0 ? double(pixels) * moment / samples : 0;
 }
 
 } // namespace smallmlt

@@ -44,14 +44,15 @@ class BurnInPicker {
     // For rounds of up to max_n samples; `program` holds cl/rng.cl,
     // cl/scan.cl (SCAN_T ulong) and cl/burnin.cl.
     BurnInPicker(const ClContext& cl, cl_program program, std::uint32_t max_n);
-    // Adds the next round (round 0 first), of n samples whose luminances are
-    // `lum` on the device and `host` (the same values, read back): each of
+    // Adds the next round, the samples of burn-in round `round`, of n samples
+    // whose luminances are `lum` on the device and `host` (the same values,
+    // read back): each of
     // the `count` picks (uint2 (round, index) each, in `picks`) is replaced
     // as above, with the streams of `seed` and the round. `scan` (n x 8
     // bytes) is left holding the prefix sums of the round's weights.
     void add_round(const ClBuffer& lum, const std::vector<float>& host, std::uint32_t n,
-                   const ClBuffer& scan, std::uint64_t seed, std::uint32_t count,
-                   const ClBuffer& picks);
+                   const ClBuffer& scan, std::uint64_t seed, std::uint32_t round,
+                   std::uint32_t count, const ClBuffer& picks);
     std::uint32_t rounds() const { return rounds_; }
 
   private:
@@ -68,20 +69,25 @@ class BurnInPicker {
 // path: the OMC part's RGB, the pixel's bits, the MLT part's RGB, its rays;
 // a dropped sample's parts are 0).
 struct BurnInParts {
-    std::vector<double> omc, rest;
-    std::vector<std::uint64_t> count;
-    double omc_sum2 = 0; // sum of the OMC parts' squared luminances
+    std::vector<double> omc, rest;       // per pixel and channel
+    std::vector<double> omc_y2, rest_y2; // per pixel: sums of squared luminances
+    std::vector<std::uint64_t> count;    // per pixel
     explicit BurnInParts(std::uint64_t pixels = 0)
-        : omc(3 * pixels, 0.0), rest(3 * pixels, 0.0), count(pixels, 0) {}
+        : omc(3 * pixels, 0.0), rest(3 * pixels, 0.0), omc_y2(pixels, 0.0), rest_y2(pixels, 0.0),
+          count(pixels, 0) {}
     // Adds a round's paths, in sample order.
     void add(const std::vector<float>& samples);
-    // V_o (or V_m) of split.hpp from M paths uniform over the P pixels: a
-    // part's sums per pixel and channel and the sum of its squared
-    // luminances. With Q = (P / M) sum f^2, an unbiased estimate of sum_p
-    // E_p[f^2], and mu_p = (P / M) S_p, whose square overestimates mu_p^2 by
-    // about (P / M) E_p[f^2], V = sum_p (E_p[f^2] - mu_p^2) is about
-    // Q (1 + P / M) - sum_p mu_p^2.
-    static double variance(const std::vector<double>& sums, double sum2, double samples);
+    // V_o (or V_m) of split.hpp, sum_p Var_p over the P pixels of one
+    // sample's luminance, from a part's sums per pixel (`sums`, RGB; `y2`,
+    // squared luminances) and the samples per pixel: P times the mean of the
+    // unbiased sample variances of the pixels that have two samples or more
+    // (which pixels those are does not depend on what they hold: paths land
+    // uniformly). Subtracting sum_p mu_p^2 from the second moment instead
+    // is unbiased too, but at a few samples per pixel it is the difference
+    // of two large, noisy sums and came out 0 (no OMC samples at all) for
+    // a light's edges at 512x512. Without such pixels: the second moment,
+    // an overestimate.
+    double variance(const std::vector<double>& sums, const std::vector<double>& y2) const;
 };
 
 } // namespace smallmlt

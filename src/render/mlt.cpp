@@ -23,13 +23,17 @@ std::string program_defines(const ClContext& cl, const DeviceScene& ds, const Ml
                     std::to_string(kDefaultWorkGroup) + "u\n";
     if (opt.float32_states) d += "#define PSS_FLOAT32 1\n";
     if (opt.eager_stay) d += "#define MLT_EAGER_STAY 1\n";
+    if (opt.split != Split::None || opt.target == Target::TwoStage)
+        d += "#define MLT_BURN_IN_SAMPLES 1\n";
     if (opt.film_atomics64) d += "#define FILM_ATOMICS64 1\n";
     return d + split_defines(opt.split);
 }
 
 ChainShape chain_shape(const MltOptions& opt) {
-    return ChainShape{opt.threads, opt.proposals, opt.float32_states, opt.film_atomics64,
-                      opt.split != Split::None};
+    ChainShape s{opt.threads, opt.proposals, opt.float32_states, opt.film_atomics64,
+                 opt.split != Split::None};
+    s.target_cells = opt.target == Target::TwoStage ? kTargetMaxCells : 1;
+    return s;
 }
 
 const MltOptions& check_options(const MltOptions& opt) {
@@ -86,48 +90,61 @@ MltRenderer::MltRenderer(const ClContext& cl, const DeviceScene& ds, const MltOp
       values_(cl, CL_MEM_READ_WRITE, plan_.bytes("values")),
       stats_(cl, CL_MEM_READ_WRITE, plan_.bytes("stats")),
       picks_(cl, CL_MEM_READ_WRITE, plan_.bytes("picks")),
+      weight_(cl, CL_MEM_READ_WRITE, plan_.bytes("target weights")), cells_(target_one_cell()),
       film_(cl, pixels(),
             plan_mlt_film(pixels(), opt.threads, max_alloc(cl, opt), opt.film_atomics64,
                           opt.film_pass_mutations)) {
     split_ = opt.split;
-    if (opt.split != Split::None) {
+    if (opt.split != Split::None || opt.target == Target::TwoStage)
         burn_in_parts_ = BurnInParts(pixels());
+    if (opt.split != Split::None)
         omc_ = make_omc_part(split_ == Split::Auto ? kChainsSplit : split_);
-    }
     state_.fill_zero(cl);
     stats_.fill_zero(cl);
     picks_.fill_zero(cl);
+    std::vector<float> ones(weight_.bytes() / sizeof(float), 1.0f);
+    weight_.write(cl, ones.data());
 }
 
-void MltRenderer::sample_starts() {
+void MltRenderer::sample_starts(RankGroup& ranks) {
     const std::uint32_t m = opt_.threads, iters = std::max(1u, opt_.burn_in_iters);
     const std::uint32_t chains = this->chains();
-    const bool split = opt_.split != Split::None;
+    // The burn-in's samples come back (pixel, OMC and MLT parts) for a split
+    // and for the two-stage target.
+    const bool samples = !burn_in_parts_.count.empty();
+    // Rounds before `first` only measure the two-stage target's weights.
+    const std::uint32_t first = opt_.target == Target::TwoStage ? iters / 2 : 0;
     ClBuffer lum(cl_, CL_MEM_READ_WRITE, plan_.bytes("luminance"));
     ClBuffer scan(cl_, CL_MEM_READ_WRITE, plan_.bytes("scan"));
-    ClBuffer omc = split ? ClBuffer(cl_, CL_MEM_READ_WRITE, plan_.bytes("OMC samples"))
-                         : ClBuffer();
+    ClBuffer omc =
+        samples ? ClBuffer(cl_, CL_MEM_READ_WRITE, plan_.bytes("OMC samples")) : ClBuffer();
     BurnInPicker picker(cl_, program_.p, m);
-    std::vector<float> host(m), host_omc(split ? 8 * m : 0);
+    std::vector<float> host(m), host_omc(samples ? 8 * m : 0);
     std::uint64_t sum = 0;
-    double sum2 = 0;
+    double sum2 = 0, part_sum = 0;
     cl_ulong omc_seed = derive_seed(opt_.seed, kPurposeOmc);
     cl_ulong pick_seed = derive_seed(opt_.seed, kPurposePick);
     for (std::uint32_t it = 0; it < iters; ++it) {
-        k_lum_.set_args(scene_.tris, scene_.nodes, scene_.mats, scene_.lights, ds_.frame, state_,
-                        cl_ulong(omc_round_seed(omc_seed, it)), cl_uint(0), cl_uint(m), lum,
-                        split ? omc : lum, stats_);
+        if (it == first && first > 0) fix_target(ranks);
+        k_lum_.set_args(scene_.tris, scene_.nodes, scene_.mats, scene_.lights, ds_.frame, weight_,
+                        cells_, state_, cl_ulong(omc_round_seed(omc_seed, it)), cl_uint(0),
+                        cl_uint(m), lum, samples ? omc : lum, stats_);
         k_lum_.run(cl_, m);
         lum.read(cl_, host.data());
+        if (samples) {
+            omc.read(cl_, host_omc.data());
+            burn_in_parts_.add(host_omc);
+            for (std::uint32_t i = 0; i < m; ++i) {
+                const float* f = &host_omc[8 * std::size_t(i) + 4];
+                part_sum += rgb_luminance(f[0], f[1], f[2]);
+            }
+        }
+        if (it < first) continue;
         for (float y : host) {
             sum += b_sample_fixed(y);
             sum2 += double(y) * y;
         }
-        if (split) {
-            omc.read(cl_, host_omc.data());
-            burn_in_parts_.add(host_omc);
-        }
-        if (opt_.burn_in) picker.add_round(lum, host, m, scan, pick_seed, chains, picks_);
+        if (opt_.burn_in) picker.add_round(lum, host, m, scan, pick_seed, it, chains, picks_);
     }
     if (!opt_.burn_in) {
         // Fresh samples: round iters, after those that estimated b.
@@ -136,15 +153,28 @@ void MltRenderer::sample_starts() {
             fresh[c] = cl_uint2{{iters, c}};
         picks_.write(cl_, fresh.data());
     }
-    double n = double(m) * iters, mean = fixed_lum(sum) / n;
+    double n = double(m) * (iters - first), mean = fixed_lum(sum) / n;
     burn_in_fixed_ = sum;
     burn_in_sum2_ = sum2;
-    burn_in_samples_ = std::uint64_t(m) * iters;
+    burn_in_samples_ = std::uint64_t(m) * (iters - first);
     burn_in_variance_ = n > 1 ? std::max(0.0, (sum2 / n - mean * mean) * n / (n - 1)) : 0;
-    if (split) {
-        omc_variance_ = BurnInParts::variance(burn_in_parts_.omc, burn_in_parts_.omc_sum2, n);
-        mlt_variance_ = BurnInParts::variance(burn_in_parts_.rest, sum2, n);
+    if (samples) {
+        double all = double(m) * iters;
+        mlt_part_b_ = part_sum / all;
+        omc_variance_ = burn_in_parts_.variance(burn_in_parts_.omc, burn_in_parts_.omc_y2);
+        mlt_variance_ = burn_in_parts_.variance(burn_in_parts_.rest, burn_in_parts_.rest_y2);
     }
+}
+
+void MltRenderer::fix_target(RankGroup& ranks) {
+    const std::uint32_t w = ds_.frame.width, h = ds_.frame.height;
+    std::vector<double> sums = burn_in_parts_.rest;
+    ranks.sum_all(sums);
+    cells_ =
+        target_cells(w, h, std::uint64_t(opt_.threads) * (opt_.burn_in_iters / 2) * ranks.size());
+    std::vector<float> weights = target_weights(cells_, w, h, sums);
+    weights.resize(weight_.bytes() / sizeof(float), 1.0f); // at most kTargetMaxCells
+    weight_.write(cl_, weights.data());
 }
 
 std::uint64_t b_sample_fixed(float lum) {
@@ -175,7 +205,7 @@ double MltRenderer::b_rel_error() const {
 
 void MltRenderer::prepare(RankGroup& ranks) {
     Clock::time_point t0 = Clock::now();
-    sample_starts();
+    sample_starts(ranks);
     if (split_ == Split::Auto) {
         bool pay = ranks.all(chains_pay(mlt_relative_variance()));
         split_ = pay ? kChainsSplit : Split::All;
@@ -190,8 +220,7 @@ void MltRenderer::prepare(RankGroup& ranks) {
 }
 
 double MltRenderer::mlt_relative_variance() const {
-    return mlt_part_relative_variance(mlt_variance_, mlt_b(burn_in_fixed_, burn_in_samples_),
-                                      double(pixels()));
+    return mlt_part_relative_variance(mlt_variance_, mlt_part_b_, double(pixels()));
 }
 
 std::unique_ptr<PathTracer> MltRenderer::make_omc_part(Split split) const {
@@ -201,14 +230,14 @@ std::unique_ptr<PathTracer> MltRenderer::make_omc_part(Split split) const {
 
 void MltRenderer::init_chains() {
     cl_ulong omc_seed = derive_seed(opt_.seed, kPurposeOmc);
-    k_init_.set_args(scene_.tris, scene_.nodes, scene_.mats, scene_.lights, ds_.frame, state_,
-                     values_, cl_uint(chains()), omc_seed, picks_, stats_);
+    k_init_.set_args(scene_.tris, scene_.nodes, scene_.mats, scene_.lights, ds_.frame, weight_,
+                     cells_, state_, values_, cl_uint(chains()), omc_seed, picks_, stats_);
     k_init_.enqueue(cl_, chains());
     cl_.finish("kernel mlt_init over " + std::to_string(chains()) + " chains");
 }
 
 void MltRenderer::owed(std::uint32_t mode) const {
-    k_owed_.set_args(ds_.frame, state_, values_, cl_uint(chains()),
+    k_owed_.set_args(ds_.frame, weight_, cells_, state_, values_, cl_uint(chains()),
                      cl_ulong(derive_seed(opt_.seed, kPurposeStep)), cl_uint(iterations_),
                      film_.band(0), film_.band(1), film_.band(2), film_.band(3), film_.plan().shape,
                      cl_uint(mode));
@@ -228,9 +257,10 @@ void MltRenderer::step(std::uint32_t n) {
         if (chains) {
             ++steps_run_;
             k_step_.set_args(scene_.tris, scene_.nodes, scene_.mats, scene_.lights, ds_.frame,
-                             state_, values_, cl_uint(opt_.threads), cl_uint(opt_.proposals), seed,
-                             iteration, threshold, film_.band(0), film_.band(1), film_.band(2),
-                             film_.band(3), film_.plan().shape, stats_, cl_uint(opt_.stuck_run));
+                             weight_, cells_, state_, values_, cl_uint(opt_.threads),
+                             cl_uint(opt_.proposals), seed, iteration, threshold, film_.band(0),
+                             film_.band(1), film_.band(2), film_.band(3), film_.plan().shape,
+                             stats_, cl_uint(opt_.stuck_run));
             k_step_.enqueue(cl_, opt_.threads);
             // The pass ends: every chain splats what it owes, and the film's
             // words go to the host before the next pass could overflow them.
@@ -248,7 +278,7 @@ void MltRenderer::step(std::uint32_t n) {
 void MltRenderer::choose_omc_rate() {
     SplitCosts c;
     c.omc_variance = omc_variance_;
-    c.b = mlt_b(burn_in_fixed_, burn_in_samples_);
+    c.b = mlt_part_b_;
     c.pixels = double(pixels());
     c.threads = double(opt_.threads);
     // One OMC-part sample per pixel measures its rays (and is kept).
@@ -375,8 +405,13 @@ std::string MltRenderer::summary(double) const {
                       "; split %s%s: OMC part %u spp + %.1f from burn-in (%.3g spp per step), "
                       "MLT part's relative variance %.3g",
                       split_name(split_), opt_.split == Split::Auto ? " (auto)" : "", omc_->spp(),
-                      double(burn_in_samples_) / double(pixels()), omc_rate_,
-                      mlt_relative_variance());
+                      double(opt_.threads) * std::max(1u, opt_.burn_in_iters) / double(pixels()),
+                      omc_rate_, mlt_relative_variance());
+        out += buf;
+    }
+    if (opt_.target == Target::TwoStage && steps_run_ > 0) {
+        std::snprintf(buf, sizeof buf, "; target two-stage (%u cells)",
+                      target_cell_count(cells_, ds_.frame.height));
         out += buf;
     }
     return out;

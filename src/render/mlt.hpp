@@ -12,6 +12,7 @@
 #include "render/mlt_film.hpp"
 #include "render/path_tracer.hpp"
 #include "render/split.hpp"
+#include "render/target.hpp"
 #include "scene/device_scene.hpp"
 
 #include <cstdint>
@@ -52,6 +53,8 @@ struct MltOptions {
     // the time the rule of split.hpp gives it, and by the burn-in's paths.
     Split split = Split::None;
     double omc_effort = 1.0;
+    // The chains' target (src/render/target.hpp).
+    Target target = Target::Luminance;
     // The file that defines eval_state: cl/eval_path.cl renders the scene;
     // the sampler tests use cl/eval_target.cl, a known target (2D, or with
     // bounces on a layout that has bounce slots).
@@ -108,8 +111,14 @@ class MltRenderer : public Integrator {
     std::vector<std::string> notes() const override;
 
     // Runs the OMC samples of burn-in: the first estimate of b, and the
-    // chains' starting samples (burn-in or fresh).
-    void sample_starts();
+    // chains' starting samples (burn-in or fresh). With the two-stage target,
+    // its first half fixes the target's weights (the same on every rank) and
+    // only the second half estimates b and picks the starts.
+    void sample_starts(RankGroup& ranks);
+    void sample_starts() {
+        SingleRank one;
+        sample_starts(one);
+    }
     // b, the mean luminance I of the OMC samples drawn so far: the burn-in's
     // and every large step's (each an OMC sample of I), so b keeps converging
     // as the render goes on; and its relative standard error, from the
@@ -172,13 +181,18 @@ class MltRenderer : public Integrator {
     mutable ClKernel k_owed_; // run by image(), which leaves the film as it was
     SceneBuffers scene_;
     ClBuffer state_, values_, stats_, picks_;
+    ClBuffer weight_;   // the target's weight per cell
+    TargetCells cells_; // in force: one cell of weight 1 until two-stage fixes them
     MltFilm film_;
     Split split_;
     std::unique_ptr<PathTracer> omc_; // the OMC part's per-pixel samples (a split)
     // The burn-in's OMC and MLT parts, summed per pixel and channel.
-    BurnInParts burn_in_parts_; // with a split
+    BurnInParts burn_in_parts_;                  // with a split or the two-stage target
     double omc_variance_ = 0, mlt_variance_ = 0; // V_o and V_m of split.hpp, from the burn-in
-    std::uint32_t steps_run_ = 0;                // steps of the chains (none with Split::All)
+    double mlt_part_b_ = 0;       // the MLT part's mean luminance, from the whole burn-in
+    std::uint32_t steps_run_ = 0; // steps of the chains (none with Split::All)
+    // Fixes the two-stage target's weights from the burn-in's MLT parts so far.
+    void fix_target(RankGroup& ranks);
     // The OMC part's path tracer for `split`.
     std::unique_ptr<PathTracer> make_omc_part(Split split) const;
     double omc_rate_ = 0, omc_owed_ = 0;

@@ -27,6 +27,8 @@ class RankGroup {
     // every rank; others' are left as they were).
     virtual void sum_to_root(std::vector<std::uint64_t>& v) = 0;
     virtual void sum_to_root(std::vector<double>& v) = 0;
+    // Element-wise sums over ranks into every rank's vector.
+    virtual void sum_all(std::vector<double>& v) = 0;
     // Each rank's text, in rank order, on rank 0 (empty elsewhere).
     virtual std::vector<std::string> gather(const std::string& mine) = 0;
 };
@@ -51,6 +53,7 @@ class SingleRank : public RankGroup {
     bool all(bool mine) override { return mine; }
     void sum_to_root(std::vector<std::uint64_t>&) override {}
     void sum_to_root(std::vector<double>&) override {}
+    void sum_all(std::vector<double>&) override {}
     std::vector<std::string> gather(const std::string& mine) override { return {mine}; }
 };
 

@@ -40,6 +40,8 @@ static_assert(sizeof(ChainValue) == 20, "ChainValue");
 SMALLMLT_CHECK_OFFSET(ChainValue, meta, 12);
 SMALLMLT_CHECK_OFFSET(ChainValue, stay, 16);
 static_assert(kMaxDepth <= CHAIN_BOUNCES_MASK, "ChainValue.meta holds the live bounces");
+static_assert(sizeof(TargetCells) == 8, "TargetCells");
+SMALLMLT_CHECK_OFFSET(TargetCells, columns, 4);
 #undef SMALLMLT_CHECK_OFFSET
 
 std::vector<std::uint32_t> host_layout() {
@@ -71,7 +73,9 @@ std::vector<std::uint32_t> host_layout() {
             offsetof(Frame, num_lights),
             sizeof(ChainValue),
             offsetof(ChainValue, meta),
-            offsetof(ChainValue, stay)};
+            offsetof(ChainValue, stay),
+            sizeof(TargetCells),
+            offsetof(TargetCells, columns)};
 }
 
 } // namespace smallmlt
