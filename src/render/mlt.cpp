@@ -124,14 +124,7 @@ void MltRenderer::sample_starts(RankGroup& ranks) {
     double sum2 = 0, part_sum = 0;
     cl_ulong omc_seed = derive_seed(opt_.seed, kPurposeOmc);
     cl_ulong pick_seed = derive_seed(opt_.seed, kPurposePick);
-    std::uint32_t rounds = 0; // run so far
     for (std::uint32_t it = 0; it < iters; ++it) {
-        // Split::Auto decides early: where no chain will run, the rest of
-        // the burn-in (random samples, worse than Sobol's) is not traced.
-        if (it == kAutoDecideRound && split_ == Split::Auto) {
-            measure_parts(part_sum, it);
-            if (!decide_split(ranks)) break;
-        }
         if (it == first && first > 0) fix_target(ranks);
         k_lum_.set_args(scene_.tris, scene_.nodes, scene_.mats, scene_.lights, ds_.frame, weight_,
                         cells_, state_, cl_ulong(omc_round_seed(omc_seed, it)), cl_uint(0),
@@ -152,7 +145,6 @@ void MltRenderer::sample_starts(RankGroup& ranks) {
             sum2 += double(y) * y;
         }
         if (opt_.burn_in) picker.add_round(lum, host, m, scan, pick_seed, it, chains, picks_);
-        rounds = it + 1;
     }
     if (!opt_.burn_in) {
         // Fresh samples: round iters, after those that estimated b.
@@ -161,31 +153,17 @@ void MltRenderer::sample_starts(RankGroup& ranks) {
             fresh[c] = cl_uint2{{iters, c}};
         picks_.write(cl_, fresh.data());
     }
-    burn_in_rounds_ = rounds;
-    const std::uint32_t b_rounds = rounds > first ? rounds - first : 0;
-    double n = double(m) * b_rounds, mean = n > 0 ? fixed_lum(sum) / n : 0;
+    double n = double(m) * (iters - first), mean = fixed_lum(sum) / n;
     burn_in_fixed_ = sum;
     burn_in_sum2_ = sum2;
-    burn_in_samples_ = std::uint64_t(m) * b_rounds;
+    burn_in_samples_ = std::uint64_t(m) * (iters - first);
     burn_in_variance_ = n > 1 ? std::max(0.0, (sum2 / n - mean * mean) * n / (n - 1)) : 0;
-    if (samples) measure_parts(part_sum, rounds);
-    if (split_ == Split::Auto) decide_split(ranks); // fewer rounds than kAutoDecideRound
-}
-
-void MltRenderer::measure_parts(double part_sum, std::uint32_t rounds) {
-    mlt_part_b_ = rounds ? part_sum / (double(opt_.threads) * rounds) : 0;
-    omc_variance_ = burn_in_parts_.variance(burn_in_parts_.omc, burn_in_parts_.omc_y2);
-    mlt_variance_ = burn_in_parts_.variance(burn_in_parts_.rest, burn_in_parts_.rest_y2);
-}
-
-bool MltRenderer::decide_split(RankGroup& ranks) {
-    bool pay = ranks.all(chains_pay(mlt_relative_variance()));
-    split_ = pay ? kChainsSplit : Split::All;
-    if (!pay) {
-        omc_.reset(); // its buffers first, so the memory plan's peak holds
-        omc_ = make_omc_part(split_);
+    if (samples) {
+        double all = double(m) * iters;
+        mlt_part_b_ = part_sum / all;
+        omc_variance_ = burn_in_parts_.variance(burn_in_parts_.omc, burn_in_parts_.omc_y2);
+        mlt_variance_ = burn_in_parts_.variance(burn_in_parts_.rest, burn_in_parts_.rest_y2);
     }
-    return pay;
 }
 
 void MltRenderer::fix_target(RankGroup& ranks) {
@@ -227,7 +205,15 @@ double MltRenderer::b_rel_error() const {
 
 void MltRenderer::prepare(RankGroup& ranks) {
     Clock::time_point t0 = Clock::now();
-    sample_starts(ranks); // decides Split::Auto
+    sample_starts(ranks);
+    if (split_ == Split::Auto) {
+        bool pay = ranks.all(chains_pay(mlt_relative_variance()));
+        split_ = pay ? kChainsSplit : Split::All;
+        if (!pay) {
+            omc_.reset(); // its buffers first, so the memory plan's peak holds
+            omc_ = make_omc_part(split_);
+        }
+    }
     if (split_ != Split::All) init_chains();
     prepared_ = true;
     prepare_seconds_ += seconds_since(t0);
@@ -320,15 +306,9 @@ void MltRenderer::omc_after_step(bool chains) {
 }
 
 bool MltRenderer::finished() const {
-    if (!prepared_) return false;
-    if (split_ != Split::All && burn_in_fixed_ > 0) return false; // the chains have light
-    auto lit = [](const std::vector<double>& v) {
-        return std::any_of(v.begin(), v.end(), [](double x) { return x > 0; });
-    };
-    // Without chains (or b = 0) only the OMC part can have light: Split::All
-    // counts the burn-in's whole paths.
-    return !omc_ ||
-           !(lit(burn_in_parts_.omc) || (split_ == Split::All && lit(burn_in_parts_.rest)));
+    if (!prepared_ || burn_in_fixed_ > 0) return false;
+    return !omc_ || std::none_of(burn_in_parts_.omc.begin(), burn_in_parts_.omc.end(),
+                                 [](double v) { return v > 0; });
 }
 
 std::uint32_t MltRenderer::state_bytes_per_chain() const {
@@ -373,7 +353,7 @@ std::vector<std::string> MltRenderer::notes() const {
                       "chains had nothing to render, and the time went to the OMC part");
     if (finished())
         out.push_back("no OMC sample of " +
-                      std::to_string(std::uint64_t(opt_.threads) * burn_in_rounds_) +
+                      std::to_string(std::uint64_t(opt_.threads) * opt_.burn_in_iters) +
                       " carried light (b = 0): the image is black; is the scene lit?");
     else if (prepared_ && be.rel_error > kMaxBRelError) {
         char buf[240];
@@ -425,8 +405,8 @@ std::string MltRenderer::summary(double) const {
                       "; split %s%s: OMC part %u spp + %.1f from burn-in (%.3g spp per step), "
                       "MLT part's relative variance %.3g",
                       split_name(split_), opt_.split == Split::Auto ? " (auto)" : "", omc_->spp(),
-                      double(opt_.threads) * burn_in_rounds_ / double(pixels()), omc_rate_,
-                      mlt_relative_variance());
+                      double(opt_.threads) * std::max(1u, opt_.burn_in_iters) / double(pixels()),
+                      omc_rate_, mlt_relative_variance());
         out += buf;
     }
     if (opt_.target == Target::TwoStage && steps_run_ > 0) {

@@ -91,8 +91,7 @@ class MltRenderer : public Integrator {
   public:
     MltRenderer(const ClContext& cl, const DeviceScene& ds, const MltOptions& opt);
 
-    // Burn-in, the split (Split::Auto decides here, every rank alike, after
-    // kAutoDecideRound rounds: without chains the burn-in ends there) and
+    // Burn-in, the split (Split::Auto decides here, every rank alike) and
     // the chains' starts.
     void prepare(RankGroup& ranks) override;
     void prepare() {
@@ -133,7 +132,6 @@ class MltRenderer : public Integrator {
     void step(std::uint32_t n);
 
     std::uint32_t iterations() const { return iterations_; }
-    std::uint32_t burn_in_rounds() const { return burn_in_rounds_; } // run by prepare()
     std::uint32_t chains() const { return opt_.threads / opt_.proposals; }
     std::uint64_t pixels() const { return std::uint64_t(ds_.frame.width) * ds_.frame.height; }
     MltStats stats() const;
@@ -195,10 +193,6 @@ class MltRenderer : public Integrator {
     std::uint32_t steps_run_ = 0; // steps of the chains (none with Split::All)
     // Fixes the two-stage target's weights from the burn-in's MLT parts so far.
     void fix_target(RankGroup& ranks);
-    // The MLT part's mean and V_o, V_m of split.hpp from `rounds` of burn-in.
-    void measure_parts(double part_sum, std::uint32_t rounds);
-    // Split::Auto's choice, the same on every rank; true if the chains run.
-    bool decide_split(RankGroup& ranks);
     // The OMC part's path tracer for `split`.
     std::unique_ptr<PathTracer> make_omc_part(Split split) const;
     double omc_rate_ = 0, omc_owed_ = 0;
@@ -216,8 +210,7 @@ class MltRenderer : public Integrator {
     BEstimate b_estimate(const MltStats& s) const;
     std::uint64_t burn_in_fixed_ = 0; // sum of I over the burn-in's samples, MLT_B_FRAC_BITS
     double burn_in_sum2_ = 0, burn_in_variance_ = 0; // of I over the burn-in's samples
-    std::uint64_t burn_in_samples_ = 0;              // of them, those that estimate b
-    std::uint32_t burn_in_rounds_ = 0;               // rounds of burn-in run
+    std::uint64_t burn_in_samples_ = 0;
     bool prepared_ = false;
     std::uint32_t iterations_ = 0;
     double prepare_seconds_ = 0, step_seconds_ = 0; // wall time of b + chain start, of steps

@@ -47,12 +47,12 @@ std::string split_defines(Split s);
 // The OMC part then takes n_o = (t_o / t_m) T c_m / (P c_o) samples per
 // pixel per step of T threads. tau is measured (doc/RESULTS.md, "Split").
 struct SplitCosts {
-    double omc_variance = 0;  // V_o
-    double b = 0;             // the MLT part's mean luminance
-    double pixels = 0;        // P
-    double omc_rays = 0;      // c_o
-    double mutation_rays = 0; // c_m
-    double threads = 0;       // T
+    double omc_variance = 0;   // V_o
+    double b = 0;              // the MLT part's mean luminance
+    double pixels = 0;         // P
+    double omc_rays = 0;       // c_o
+    double mutation_rays = 0;  // c_m
+    double threads = 0;        // T
 };
 constexpr double kChainCorrelation = 8.0; // tau
 
@@ -68,12 +68,6 @@ constexpr double kChainCorrelation = 8.0; // tau
 // and cornell-glass (18) are level with PT; cornell-water (54) takes 0.43
 // of PT's time. The threshold lies between.
 constexpr double kChainsPayRatio = 4.0;
-// Split::Auto decides after this many rounds of burn-in (or all of them, if
-// fewer): where no chain will run, the rest of the burn-in is not traced, as
-// its random samples would be counted beside Sobol's better ones
-// (doc/RESULTS.md: cornell's MSE at 30 s, 1.41 of PT's after 32 rounds,
-// 1.18 after 4).
-constexpr std::uint32_t kAutoDecideRound = 4;
 double mlt_part_relative_variance(double mlt_variance, double b, double pixels);
 bool chains_pay(double relative_variance);
 // n_o, times `effort` (--omc-effort; 1 is the rule).
