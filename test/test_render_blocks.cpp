@@ -208,7 +208,7 @@ TEST_P(RenderBlocks, MltMatchesPathTracingPerBlock) {
 //   6 s.
 // - cornell-water, K = 1: 2 x 2 blocks of 16 x 16; 8 renders x 48 steps; PT
 //   1,536 spp; 2.7% / 13% / 28% (the two quadrants under water); 10 s.
-// - cornell-water and ajar, K = 1, split direct (the default): the whole
+// - cornell-water and ajar, K = 1, split direct: the whole
 //   image (OMC part and chains) per block, and its mean against PT's; 2 x 2
 //   blocks; 8 renders x 48 steps with a twentieth of the rule's OMC time
 //   (the rule would spend most of a test's time there); 3.2% / 7.4% / 13%
