@@ -530,7 +530,8 @@ void add_path(std::vector<float>& out, std::uint32_t pixel, float o, float m) {
 // pixels with two paths or more. Pixel 0: OMC parts 1, 3 (variance 2);
 // pixel 1: 5, 5, 8 (variance 3); pixel 2: one path (left out); pixel 3:
 // none. V = 4 x (2 + 3) / 2 = 10. The MLT parts are all 2: V = 0. With no
-// pixel of two paths: the second moment, P x mean f^2.
+// pixel of two paths: the second moment, P x mean f^2. The means per path:
+// 122 / 6 and 2.
 TEST(BurnInParts, VarianceIsThePixelsSampleVariance) {
     BurnInParts parts(4);
     std::vector<float> round;
@@ -544,6 +545,8 @@ TEST(BurnInParts, VarianceIsThePixelsSampleVariance) {
     EXPECT_EQ(parts.count, (std::vector<std::uint64_t>{2, 3, 1, 0}));
     EXPECT_NEAR(parts.variance(parts.omc, parts.omc_y2), 10.0, 1e-9);
     EXPECT_NEAR(parts.variance(parts.rest, parts.rest_y2), 0.0, 1e-9);
+    EXPECT_NEAR(parts.mean(parts.omc), 122.0 / 6, 1e-9);
+    EXPECT_NEAR(parts.mean(parts.rest), 2.0, 1e-9);
     BurnInParts sparse(4);
     round.clear();
     add_path(round, 0, 1, 0);

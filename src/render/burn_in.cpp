@@ -80,6 +80,15 @@ void BurnInParts::add(const std::vector<float>& samples) {
     }
 }
 
+double BurnInParts::mean(const std::vector<double>& sums) const {
+    double y = 0, samples = 0;
+    for (std::size_t p = 0; p < count.size(); ++p) {
+        y += rgb_luminance(sums[3 * p], sums[3 * p + 1], sums[3 * p + 2]);
+        samples += double(count[p]);
+    }
+    return samples > 0 ? y / samples : 0;
+}
+
 double BurnInParts::variance(const std::vector<double>& sums, const std::vector<double>& y2) const {
     const std::size_t pixels = count.size();
     double within = 0, moment = 0, samples = 0;

@@ -88,6 +88,8 @@ struct BurnInParts {
     // a light's edges at 512x512. Without such pixels: the second moment,
     // an overestimate.
     double variance(const std::vector<double>& sums, const std::vector<double>& y2) const;
+    // A part's mean luminance per path, from its sums per pixel (`sums`, RGB).
+    double mean(const std::vector<double>& sums) const;
 };
 
 } // namespace smallmlt

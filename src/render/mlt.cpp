@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <numeric>
 
 namespace smallmlt {
 
@@ -121,7 +122,7 @@ void MltRenderer::sample_starts(RankGroup& ranks) {
     BurnInPicker picker(cl_, program_.p, m);
     std::vector<float> host(m), host_omc(samples ? 8 * m : 0);
     std::uint64_t sum = 0;
-    double sum2 = 0, part_sum = 0;
+    double sum2 = 0;
     cl_ulong omc_seed = derive_seed(opt_.seed, kPurposeOmc);
     cl_ulong pick_seed = derive_seed(opt_.seed, kPurposePick);
     for (std::uint32_t it = 0; it < iters; ++it) {
@@ -134,10 +135,6 @@ void MltRenderer::sample_starts(RankGroup& ranks) {
         if (samples) {
             omc.read(cl_, host_omc.data());
             burn_in_parts_.add(host_omc);
-            for (std::uint32_t i = 0; i < m; ++i) {
-                const float* f = &host_omc[8 * std::size_t(i) + 4];
-                part_sum += rgb_luminance(f[0], f[1], f[2]);
-            }
         }
         if (it < first) continue;
         for (float y : host) {
@@ -159,8 +156,7 @@ void MltRenderer::sample_starts(RankGroup& ranks) {
     burn_in_samples_ = std::uint64_t(m) * (iters - first);
     burn_in_variance_ = n > 1 ? std::max(0.0, (sum2 / n - mean * mean) * n / (n - 1)) : 0;
     if (samples) {
-        double all = double(m) * iters;
-        mlt_part_b_ = part_sum / all;
+        mlt_part_b_ = burn_in_parts_.mean(burn_in_parts_.rest);
         omc_variance_ = burn_in_parts_.variance(burn_in_parts_.omc, burn_in_parts_.omc_y2);
         mlt_variance_ = burn_in_parts_.variance(burn_in_parts_.rest, burn_in_parts_.rest_y2);
     }
@@ -168,10 +164,13 @@ void MltRenderer::sample_starts(RankGroup& ranks) {
 
 void MltRenderer::fix_target(RankGroup& ranks) {
     const std::uint32_t w = ds_.frame.width, h = ds_.frame.height;
+    // Every rank's sums and sample count (ranks may run different threads).
     std::vector<double> sums = burn_in_parts_.rest;
+    sums.push_back(double(std::accumulate(burn_in_parts_.count.begin(), burn_in_parts_.count.end(),
+                                          std::uint64_t(0))));
     ranks.sum_all(sums);
-    cells_ =
-        target_cells(w, h, std::uint64_t(opt_.threads) * (opt_.burn_in_iters / 2) * ranks.size());
+    cells_ = target_cells(w, h, std::uint64_t(sums.back()));
+    sums.pop_back();
     std::vector<float> weights = target_weights(cells_, w, h, sums);
     weights.resize(weight_.bytes() / sizeof(float), 1.0f); // at most kTargetMaxCells
     weight_.write(cl_, weights.data());
