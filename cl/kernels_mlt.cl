@@ -56,7 +56,8 @@ __kernel void mlt_init(__global const Triangle* tris, __global const BvhNode* no
         ulong round_seed = rng_mix64(omc_seed * 0x9E3779B97F4A7C15UL + (ulong)pick.x);
         SampleSource src =
             smp_chain(state, c, num_chains, rng_key(round_seed, pick.y, 0u), SMP_LARGE, 0u);
-        EvalResult s = mlt_evaluate(&sc, &frame, &src, &target, &nonfinite);
+        float w;
+        EvalResult s = mlt_evaluate(&sc, &frame, &src, &target, &nonfinite, &w);
         smp_commit(&src, s.bounces);
         values[c] = chain_started(s.f, s.bounces);
     }

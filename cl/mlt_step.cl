@@ -111,11 +111,13 @@ inline bool mlt_is_large(ulong key, uint large_threshold) {
     return rng_u32(key, MLT_DIM_LARGE) < large_threshold;
 }
 
-/* The proposal y that src defines, evaluated (lazily), with y.f = G(y). */
+/* The proposal y that src defines, evaluated (lazily), with y.f = G(y);
+ * *w = w(y). */
 inline EvalResult mlt_evaluate(const SceneView* sc, const Frame* frame, SampleSource* src,
-                               const MltTarget* target, uint* nonfinite) {
+                               const MltTarget* target, uint* nonfinite, float* w) {
     EvalResult y = mlt_checked(eval_state(sc, frame, src), nonfinite);
-    y.f *= mlt_weight(target, y.pixel);
+    *w = mlt_weight(target, y.pixel);
+    y.f *= *w;
     return y;
 }
 
@@ -125,12 +127,11 @@ inline EvalResult mlt_evaluate(const SceneView* sc, const Frame* frame, SampleSo
 inline float mlt_try_proposal(const SceneView* sc, const Frame* frame, SampleSource* src,
                               const MltTarget* target, float3 gx, const Film* film, ulong key,
                               EvalResult* y, uint* nonfinite, uint* atomics) {
-    float ix = path_luminance(gx);
-    *y = mlt_evaluate(sc, frame, src, target, nonfinite);
+    float ix = path_luminance(gx), wy;
+    *y = mlt_evaluate(sc, frame, src, target, nonfinite, &wy);
     float iy = path_luminance(y->f);
     float a = ix > 0.0f ? fmin(1.0f, iy / ix) : 1.0f;
-    *atomics += film_splat(film, y->pixel, y->f, a / mlt_weight(target, y->pixel), key,
-                           MLT_DIM_ROUND_Y, false);
+    *atomics += film_splat(film, y->pixel, y->f, a / wy, key, MLT_DIM_ROUND_Y, false);
     return a;
 }
 
