@@ -4,7 +4,9 @@
 # reference) for PT and for MLT at several large-step probabilities, with
 # the stuck-chain counts each MLT render reports (chains that rejected
 # STUCK_RUN proposals in a row, and the longest run). Few threads, as on a
-# small device, so that every chain runs many steps.
+# small device, so that every chain runs many steps. The chains run
+# whatever the burn-in found (--split visible: --split auto path traces the
+# scene when the burn-in misses the caustic's paths).
 # Writes bench/results/stuck/. Usage: bench/stuck.sh [BIN]
 # Settings (environment): SIZE, SECONDS, THREADS, LARGE_STEPS, SEEDS, LOG_EVERY.
 set -eu
@@ -28,7 +30,7 @@ for seed in $SEEDS; do
         --log-every "$LOG_EVERY" --out "$OUT/pt-s$seed.png"
     tail -n +2 "$OUT/log.csv" | sed "s/^/pt,$seed,/" >> "$csv"
     for p in $LARGE_STEPS; do
-        "$BIN" render $common --threads "$THREADS" --large-step "$p" --seed "$seed" \
+        "$BIN" render $common --threads "$THREADS" --split visible --large-step "$p" --seed "$seed" \
             --log "$OUT/log.csv" --log-every "$LOG_EVERY" --out "$OUT/mlt-p$p-s$seed.png" \
             2> /dev/null > "$OUT/summary.txt"
         tail -n +2 "$OUT/log.csv" | sed "s/^/mlt-p$p,$seed,/" >> "$csv"

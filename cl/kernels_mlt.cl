@@ -4,8 +4,9 @@
  * in mlt_step.cl, the film in film.cl. Every kernel runs in work-groups of
  * MLT_GROUP and counts into its group's row of stats. */
 
-/* The target I of the OMC path of each key rng_key(seed, first + i, 0): the
- * normalization b = E[I] is their mean. With MLT_BURN_IN_SAMPLES (a split,
+/* The target I of burn-in sample i of round `round`: the OMC path of key
+ * rng_key(seed, i, 0) (seed: the round's) at the film position burnin_film
+ * gives it. The normalization b = E[I] is their mean. With MLT_BURN_IN_SAMPLES (a split,
  * or the two-stage target) the path's parts go to omc[2 i] (xyz: the OMC
  * part, RGB; w: the pixel's bits) and omc[2 i + 1] (xyz: the MLT part; w:
  * the rays traced), so that the burn-in's paths also render the OMC part,
@@ -16,8 +17,9 @@
 __kernel void mlt_luminance(__global const Triangle* tris, __global const BvhNode* nodes,
                             __global const Material* mats, __global const LightEntry* lights,
                             const Frame frame, __global const float* weight,
-                            const TargetCells cells, __global uint* state, const ulong seed,
-                            const uint first, const uint count, __global float* lum,
+                            const TargetCells cells, const BurnInFilm film,
+                            __global uint* state, const ulong seed, const uint round,
+                            const uint count, __global float* lum,
                             __global float4* omc, __global ulong* stats) {
     __local uint l_count[MLT_COUNTS];
     uint i = get_global_id(0), nonfinite = 0u;
@@ -26,7 +28,8 @@ __kernel void mlt_luminance(__global const Triangle* tris, __global const BvhNod
     if (i < count) {
         SceneView sc = path_scene(tris, nodes, mats, lights, &frame);
         MltTarget target = mlt_target(weight, cells, &frame);
-        SampleSource src = smp_chain(state, 0u, 1u, rng_key(seed, first + i, 0u), SMP_LARGE, 0u);
+        uint2 at = burnin_film(&film, &frame, (ulong)round * film.per_round + i);
+        SampleSource src = smp_chain_start(state, 0u, 1u, rng_key(seed, i, 0u), at);
         EvalResult s = mlt_checked(eval_state(&sc, &frame, &src), &nonfinite);
         lum[i] = path_luminance(s.f) * mlt_weight(&target, s.pixel);
 #ifdef MLT_BURN_IN_SAMPLES
@@ -37,14 +40,16 @@ __kernel void mlt_luminance(__global const Triangle* tris, __global const BvhNod
     mlt_publish_nonfinite(stats, l_count, nonfinite);
 }
 
-/* Starts chain c at the OMC path of sample picks[c] = (round r, index i):
- * the path of key rng_key(round seed, i, 0), as mlt_luminance drew it, where
- * the round seed is omc_round_seed(omc_seed, r) (src/render/mlt.cpp). */
+/* Starts chain c at burn-in sample picks[c] = (round r, index i): the path
+ * of key rng_key(round seed, i, 0) at its film position, as mlt_luminance
+ * drew it, where the round seed is omc_round_seed(omc_seed, r)
+ * (src/render/burn_in.cpp). */
 __kernel void mlt_init(__global const Triangle* tris, __global const BvhNode* nodes,
                        __global const Material* mats, __global const LightEntry* lights,
                        const Frame frame, __global const float* weight, const TargetCells cells,
-                       __global uint* state, __global ChainValue* values, const uint num_chains,
-                       const ulong omc_seed, __global const uint2* picks, __global ulong* stats) {
+                       const BurnInFilm film, __global uint* state, __global ChainValue* values,
+                       const uint num_chains, const ulong omc_seed, __global const uint2* picks,
+                       __global ulong* stats) {
     __local uint l_count[MLT_COUNTS];
     uint c = get_global_id(0), nonfinite = 0u;
     mlt_zero_counts(l_count);
@@ -54,8 +59,9 @@ __kernel void mlt_init(__global const Triangle* tris, __global const BvhNode* no
         MltTarget target = mlt_target(weight, cells, &frame);
         uint2 pick = picks[c];
         ulong round_seed = rng_mix64(omc_seed * 0x9E3779B97F4A7C15UL + (ulong)pick.x);
+        uint2 at = burnin_film(&film, &frame, (ulong)pick.x * film.per_round + pick.y);
         SampleSource src =
-            smp_chain(state, c, num_chains, rng_key(round_seed, pick.y, 0u), SMP_LARGE, 0u);
+            smp_chain_start(state, c, num_chains, rng_key(round_seed, pick.y, 0u), at);
         float w;
         EvalResult s = mlt_evaluate(&sc, &frame, &src, &target, &nonfinite, &w);
         smp_commit(&src, s.bounces);

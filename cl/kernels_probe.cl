@@ -38,6 +38,11 @@ __kernel void probe_layout(__global uint* out) {
     out[i++] = PROBE_OFFSET(ChainValue, stay);
     out[i++] = sizeof(TargetCells);
     out[i++] = PROBE_OFFSET(TargetCells, columns);
+    out[i++] = sizeof(BurnInFilm);
+    out[i++] = PROBE_OFFSET(BurnInFilm, seed_hi);
+    out[i++] = PROBE_OFFSET(BurnInFilm, offset);
+    out[i++] = PROBE_OFFSET(BurnInFilm, step);
+    out[i++] = PROBE_OFFSET(BurnInFilm, per_round);
 }
 
 /* Closest hit of each ray (origin xyz, tmax in o; direction in d):

@@ -128,3 +128,17 @@ __kernel void probe_chain_numbers(__global const uint* state, __global const Cha
     }
     out[c * (n + 1u) + n] = values[c].meta & CHAIN_BOUNCES_MASK;
 }
+
+/* Burn-in samples first .. first + n - 1 (burnin_film.cl): out[3i], out[3i + 1]
+ * are the film numbers of sample first + i, out[3i + 2] the pixel they
+ * splat to. */
+__kernel void probe_burnin_film(const BurnInFilm film, const Frame frame, const ulong first,
+                                const uint n, __global uint* out) {
+    uint i = get_global_id(0);
+    if (i >= n) return;
+    uint2 v = burnin_film(&film, &frame, first + i);
+    out[3u * i] = v.x;
+    out[3u * i + 1u] = v.y;
+    out[3u * i + 2u] = eval_pixel(&frame, layout_unit(v.x, LAYOUT_CAMERA_BITS),
+                                  layout_unit(v.y, LAYOUT_CAMERA_BITS));
+}

@@ -14,6 +14,7 @@
 #define SMP_REPLAY 0u /* y = x: evaluate the stored state */
 #define SMP_SMALL 1u  /* perturb every live number */
 #define SMP_LARGE 2u  /* draw every number afresh: the OMC path of `key` */
+#define SMP_START 3u  /* as SMP_LARGE, but the film position is `film` */
 
 typedef struct {
     __global uint* state;
@@ -22,6 +23,7 @@ typedef struct {
     ulong key;
     uint mode;
     uint alive; /* live bounces of x */
+    uint2 film; /* SMP_START: the film numbers (LAYOUT_CAMERA_BITS wide) */
 } SampleSource;
 
 inline SampleSource smp_chain(__global uint* state, uint chain, uint stride, ulong key, uint mode,
@@ -33,6 +35,16 @@ inline SampleSource smp_chain(__global uint* state, uint chain, uint stride, ulo
     s.key = key;
     s.mode = mode;
     s.alive = alive;
+    s.film = (uint2)(0u);
+    return s;
+}
+
+/* A burn-in sample: the path of `key` at the film numbers `film`
+ * (burnin_film.cl). */
+inline SampleSource smp_chain_start(__global uint* state, uint chain, uint stride, ulong key,
+                                    uint2 film) {
+    SampleSource s = smp_chain(state, chain, stride, key, SMP_START, 0u);
+    s.film = film;
     return s;
 }
 
@@ -72,9 +84,10 @@ inline uint smp_perturb_bits(uint v, uint r, uint bits) {
  * integer below 2^bits: the path reads it (smp_propose) and a commit stores
  * it, one value computed the same way both times. */
 inline uint smp_propose_bits(const SampleSource* s, uint bounce, LayoutSlot at) {
+    if (s->mode == SMP_START && at.dim < LAYOUT_CAMERA_DIMS) return at.dim ? s->film.y : s->film.x;
     uint r = rng_u32(s->key, at.dim);
     bool live = at.dim < LAYOUT_CAMERA_DIMS || bounce < s->alive;
-    if (s->mode == SMP_LARGE || !live) return r >> (32u - at.bits);
+    if (s->mode >= SMP_LARGE || !live) return r >> (32u - at.bits);
     uint v = pss_read_bits(s->state, s->chain, s->stride, at.bit_offset, at.bits);
     return s->mode == SMP_REPLAY ? v : smp_perturb_bits(v, r, at.bits);
 }
@@ -101,9 +114,11 @@ inline float smp_perturb(float x, uint r) {
 }
 
 inline float smp_propose(const SampleSource* s, uint bounce, LayoutSlot at) {
+    if (s->mode == SMP_START && at.dim < LAYOUT_CAMERA_DIMS)
+        return layout_unit(at.dim ? s->film.y : s->film.x, LAYOUT_CAMERA_BITS);
     uint r = rng_u32(s->key, at.dim);
     bool live = at.dim < LAYOUT_CAMERA_DIMS || bounce < s->alive;
-    if (s->mode == SMP_LARGE || !live) return (float)(r >> 8) * (1.0f / 16777216.0f);
+    if (s->mode >= SMP_LARGE || !live) return (float)(r >> 8) * (1.0f / 16777216.0f);
     float x = pss_load(s->state, s->chain, s->stride, at);
     return s->mode == SMP_REPLAY ? x : smp_perturb(x, r);
 }

@@ -131,6 +131,19 @@ typedef struct {
     u32 columns;
 } TargetCells;
 
+/* Where the burn-in's samples lie on the film (cl/burnin_film.cl): sample
+ * g = round * per_round + index, with h = g + offset, is Sobol sample
+ * h / P of pixel ((h mod P) * step) mod P (P pixels, step coprime with P),
+ * in the Sobol sequences of seed (seed_hi, seed_lo): the OMC part's. 20
+ * bytes. */
+typedef struct {
+    u32 seed_lo;
+    u32 seed_hi;
+    u32 offset;
+    u32 step;
+    u32 per_round;
+} BurnInFilm;
+
 #define FILM_MAX_BANDS 4
 #define FILM64_FRAC_BITS 24
 

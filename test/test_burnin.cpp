@@ -474,12 +474,15 @@ TEST(OmcKeys, DistinctOverTheWholeCommandLineRange) {
 
 // Every chain starts on the path its pick found lit: mlt_init regenerates,
 // from its round's seed (made on the device from the pick's round) and its
-// index, the sample burnin_pick chose (1000 chains over 7 rounds).
+// index, the sample burnin_pick chose (1000 chains over 7 rounds), at the
+// film position the burn-in gave that sample (in the pixel that
+// burn_in_film_sample names for round x threads + index).
 TEST(BurnIn, ChainsStartOnThePathsTheirPicksFound) {
     DeviceScene ds = prepare_scene(test::scene("cornell-water", 32, 32));
     MltOptions opt;
     opt.threads = 1000;
     opt.burn_in_iters = 7;
+    opt.extra_files = {"cl/kernels_probe_mlt.cl"};
     MltRenderer mlt(test::cl(), ds, opt);
     mlt.prepare();
     std::vector<ChainValue> v(opt.threads);
@@ -488,6 +491,22 @@ TEST(BurnIn, ChainsStartOnThePathsTheirPicksFound) {
     for (const ChainValue& c : v)
         dark += !(c.rgb[0] + c.rgb[1] + c.rgb[2] > 0);
     EXPECT_EQ(dark, 0) << "chains started on unlit paths";
+    std::vector<cl_uint2> picks(opt.threads);
+    mlt.picks().read(test::cl(), picks.data());
+    ClBuffer out(test::cl(), CL_MEM_WRITE_ONLY, opt.threads * sizeof(cl_uint));
+    ClKernel k(mlt.program(), "probe_chain_pixel");
+    k.set_args(ds.frame, mlt.state(), cl_uint(opt.threads), out);
+    k.run(test::cl(), opt.threads);
+    std::vector<cl_uint> pixel(opt.threads);
+    out.read(test::cl(), pixel.data());
+    std::set<cl_uint> rounds;
+    for (std::uint32_t c = 0; c < opt.threads; ++c) {
+        std::uint64_t g = std::uint64_t(picks[c].s[0]) * opt.threads + picks[c].s[1];
+        ASSERT_EQ(pixel[c], burn_in_film_sample(mlt.burn_in_film(), 32 * 32, g).first)
+            << "chain " << c << ", pick (" << picks[c].s[0] << ", " << picks[c].s[1] << ")";
+        rounds.insert(picks[c].s[0]);
+    }
+    EXPECT_EQ(rounds.size(), 7u) << "the picks come from every round";
 }
 
 // The paper's Figure 1 in a test: early in a render (2 of a normal render's

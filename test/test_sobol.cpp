@@ -1,4 +1,4 @@
-// The path tracer's low-discrepancy sample source (cl/sample_sobol.cl):
+// The path tracer's low-discrepancy sample source (cl/sobol.cl, cl/sample_sobol.cl):
 // every pair of numbers is a (0,m,2)-net in each aligned block of 2^m
 // samples (exact checks), every number is stratified on its own, different
 // pairs and pixels are independent (chi-square at 1e-3 per test), and the
@@ -22,7 +22,7 @@ class SobolProbe {
   public:
     explicit SobolProbe(const DeviceScene& ds)
         : program_(test::cl().build({"cl/shared_types.h", "cl/rng.cl", "cl/layout.cl",
-                                     "cl/sample_sobol.cl", "cl/kernels_probe_sobol.cl"},
+                                     "cl/sobol.cl", "cl/sample_sobol.cl", "cl/kernels_probe_sobol.cl"},
                                     ds.layout.defines())) {}
 
     // Slots `slot` and `slot` + 1 of `bounce` (or the film position) for

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <numeric>
 
 namespace smallmlt {
 
@@ -24,6 +25,30 @@ std::uint64_t omc_round_seed(std::uint64_t omc_seed, std::uint32_t round) {
 
 std::uint64_t omc_sample_key(std::uint64_t omc_seed, std::uint32_t round, std::uint32_t index) {
     return rng_key(omc_round_seed(omc_seed, round), index, 0);
+}
+
+BurnInFilm burn_in_film(std::uint64_t pixel_seed, std::uint64_t offset_seed, std::uint32_t pixels,
+                        std::uint32_t per_round) {
+    std::uint32_t step = std::max(1u, std::uint32_t(0.6180339887498949 * pixels));
+    while (std::gcd(step, pixels) != 1)
+        ++step;
+    BurnInFilm f{};
+    f.seed_lo = std::uint32_t(pixel_seed);
+    f.seed_hi = std::uint32_t(pixel_seed >> 32);
+    f.offset = pixels ? std::uint32_t(offset_seed % pixels) : 0;
+    f.step = step;
+    f.per_round = per_round;
+    return f;
+}
+
+std::pair<std::uint32_t, std::uint32_t> burn_in_film_sample(const BurnInFilm& f,
+                                                            std::uint32_t pixels, std::uint64_t g) {
+    std::uint64_t h = g + f.offset;
+    return {std::uint32_t((h % pixels) * f.step % pixels), std::uint32_t(h / pixels)};
+}
+
+std::uint32_t burn_in_film_end(const BurnInFilm& f, std::uint32_t pixels, std::uint64_t samples) {
+    return std::uint32_t((std::uint64_t(f.offset) + samples + pixels - 1) / pixels);
 }
 
 int burnin_weight_exponent(double sum) {

@@ -4,8 +4,10 @@
 #pragma once
 #include "device/ocl.hpp"
 #include "device/scan.hpp"
+#include "shared_types.h"
 
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 namespace smallmlt {
@@ -20,6 +22,22 @@ namespace smallmlt {
 std::uint64_t omc_round_seed(std::uint64_t omc_seed, std::uint32_t round);
 // The key of sample (round, index), as the kernels make it.
 std::uint64_t omc_sample_key(std::uint64_t omc_seed, std::uint32_t round, std::uint32_t index);
+
+// Where the burn-in's samples lie on the film (BurnInFilm,
+// cl/burnin_film.cl): the first Sobol samples of the pixels' sequences under
+// pixel_seed (the split's OMC part's), spread over the P pixels in the order
+// (j * step) mod P, step coprime with P and near 0.618 P so that consecutive
+// samples land far apart, from an offset in [0, P) drawn from offset_seed.
+// Sample (r, i) is number g = r * per_round + i.
+BurnInFilm burn_in_film(std::uint64_t pixel_seed, std::uint64_t offset_seed, std::uint32_t pixels,
+                        std::uint32_t per_round);
+// The pixel and the Sobol sample number of burn-in sample g, as the kernels
+// place it.
+std::pair<std::uint32_t, std::uint32_t> burn_in_film_sample(const BurnInFilm& f,
+                                                            std::uint32_t pixels, std::uint64_t g);
+// The first Sobol sample number that no pixel reaches in the burn-in's first
+// `samples` samples: where the OMC part's path tracer begins.
+std::uint32_t burn_in_film_end(const BurnInFilm& f, std::uint32_t pixels, std::uint64_t samples);
 
 // The exponent e of the burn-in's fixed-point weights (cl/burnin.cl,
 // burnin_weights): the largest with sum * 2^e < 2^62, where sum is the sum
@@ -81,8 +99,8 @@ struct BurnInParts {
     // sample's luminance, from a part's sums per pixel (`sums`, RGB; `y2`,
     // squared luminances) and the samples per pixel: P times the mean of the
     // unbiased sample variances of the pixels that have two samples or more
-    // (which pixels those are does not depend on what they hold: paths land
-    // uniformly). Subtracting sum_p mu_p^2 from the second moment instead
+    // (which pixels those are does not depend on what they hold: where paths
+    // land is fixed by cl/burnin_film.cl). Subtracting sum_p mu_p^2 from the second moment instead
     // is unbiased too, but at a few samples per pixel it is the difference
     // of two large, noisy sums and came out 0 (no OMC samples at all) for
     // a light's edges at 512x512. Without such pixels: the second moment,

@@ -16,8 +16,9 @@ namespace smallmlt {
 
 namespace {
 
-// Seeds of the three kinds of streams of a render.
-constexpr std::uint64_t kPurposeOmc = 1, kPurposePick = 2, kPurposeStep = 3, kPurposePixel = 4;
+// Seeds of the kinds of streams of a render.
+constexpr std::uint64_t kPurposeOmc = 1, kPurposePick = 2, kPurposeStep = 3, kPurposePixel = 4,
+                        kPurposeFilmOffset = 5;
 
 std::string program_defines(const ClContext& cl, const DeviceScene& ds, const MltOptions& opt) {
     std::string d = ds.layout.defines() + scan_defines(cl.device()) + "#define MLT_GROUP " +
@@ -71,12 +72,13 @@ void mlt_require_device(const DeviceInfo& d, const MltOptions& opt) {
 }
 
 std::vector<std::string> mlt_program_files(const MltOptions& opt) {
-    std::vector<std::string> files = {
-        "cl/shared_types.h",  "cl/rng.cl",         "cl/layout.cl", "cl/pss.cl",
-        "cl/sample_chain.cl", "cl/geometry.cl",    "cl/bvh.cl",    "cl/bsdf.cl",
-        "cl/light.cl",        "cl/path.cl",        "cl/camera.cl", "cl/eval_result.cl",
-        opt.evaluator,        "cl/chain_value.cl", "cl/film.cl",   "cl/mlt_step.cl",
-        "cl/kernels_mlt.cl",  "cl/scan.cl",        "cl/burnin.cl"};
+    std::vector<std::string> files = {"cl/shared_types.h", "cl/rng.cl",          "cl/layout.cl",
+                                      "cl/pss.cl",         "cl/sample_chain.cl", "cl/sobol.cl",
+                                      "cl/burnin_film.cl", "cl/geometry.cl",     "cl/bvh.cl",
+                                      "cl/bsdf.cl",        "cl/light.cl",        "cl/path.cl",
+                                      "cl/camera.cl",      "cl/eval_result.cl",  opt.evaluator,
+                                      "cl/chain_value.cl", "cl/film.cl",         "cl/mlt_step.cl",
+                                      "cl/kernels_mlt.cl", "cl/scan.cl",         "cl/burnin.cl"};
     files.insert(files.end(), opt.extra_files.begin(), opt.extra_files.end());
     return files;
 }
@@ -92,6 +94,9 @@ MltRenderer::MltRenderer(const ClContext& cl, const DeviceScene& ds, const MltOp
       stats_(cl, CL_MEM_READ_WRITE, plan_.bytes("stats")),
       picks_(cl, CL_MEM_READ_WRITE, plan_.bytes("picks")),
       weight_(cl, CL_MEM_READ_WRITE, plan_.bytes("target weights")), cells_(target_one_cell()),
+      burn_in_film_(smallmlt::burn_in_film(derive_seed(opt.seed, kPurposePixel),
+                                           derive_seed(opt.seed, kPurposeFilmOffset),
+                                           std::uint32_t(pixels()), opt.threads)),
       film_(cl, pixels(),
             plan_mlt_film(pixels(), opt.threads, max_alloc(cl, opt), opt.film_atomics64,
                           opt.film_pass_mutations)) {
@@ -128,8 +133,8 @@ void MltRenderer::sample_starts(RankGroup& ranks) {
     for (std::uint32_t it = 0; it < iters; ++it) {
         if (it == first && first > 0) fix_target(ranks);
         k_lum_.set_args(scene_.tris, scene_.nodes, scene_.mats, scene_.lights, ds_.frame, weight_,
-                        cells_, state_, cl_ulong(omc_round_seed(omc_seed, it)), cl_uint(0),
-                        cl_uint(m), lum, samples ? omc : lum, stats_);
+                        cells_, burn_in_film_, state_, cl_ulong(omc_round_seed(omc_seed, it)),
+                        cl_uint(it), cl_uint(m), lum, samples ? omc : lum, stats_);
         k_lum_.run(cl_, m);
         lum.read(cl_, host.data());
         if (samples) {
@@ -223,14 +228,20 @@ double MltRenderer::mlt_relative_variance() const {
 }
 
 std::unique_ptr<PathTracer> MltRenderer::make_omc_part(Split split) const {
+    // Each pixel's Sobol sequence goes on after the burn-in's samples (and
+    // the fresh starts of --burn-in none, round T).
+    const std::uint32_t rounds = std::max(1u, opt_.burn_in_iters);
+    std::uint64_t samples = std::uint64_t(opt_.threads) * rounds + (opt_.burn_in ? 0 : chains());
+    std::uint32_t first = burn_in_film_end(burn_in_film_, std::uint32_t(pixels()), samples);
     return std::make_unique<PathTracer>(cl_, ds_, derive_seed(opt_.seed, kPurposePixel),
-                                        OmcPart{split, &scene_});
+                                        OmcPart{split, &scene_, first});
 }
 
 void MltRenderer::init_chains() {
     cl_ulong omc_seed = derive_seed(opt_.seed, kPurposeOmc);
     k_init_.set_args(scene_.tris, scene_.nodes, scene_.mats, scene_.lights, ds_.frame, weight_,
-                     cells_, state_, values_, cl_uint(chains()), omc_seed, picks_, stats_);
+                     cells_, burn_in_film_, state_, values_, cl_uint(chains()), omc_seed, picks_,
+                     stats_);
     k_init_.enqueue(cl_, chains());
     cl_.finish("kernel mlt_init over " + std::to_string(chains()) + " chains");
 }
@@ -298,6 +309,8 @@ void MltRenderer::omc_after_step(bool chains) {
     } else {
         omc_owed_ += omc_rate_;
     }
+    // Whole samples as soon as they are owed, so that the host's sums, and
+    // the image, do not depend on how steps are grouped into passes.
     std::uint32_t k = std::uint32_t(std::min(omc_owed_, 4096.0));
     if (k == 0) return;
     omc_->add_samples(k);

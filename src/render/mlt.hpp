@@ -165,10 +165,16 @@ class MltRenderer : public Integrator {
     // r of chains_pay (src/render/split.hpp), from the burn-in.
     double mlt_relative_variance() const;
     const MltFilm& film() const { return film_; }
+    // Where the burn-in's samples lie on the film, what they left per pixel,
+    // and the OMC part's first Sobol sample number (after the burn-in's).
+    const BurnInFilm& burn_in_film() const { return burn_in_film_; }
+    const BurnInParts& burn_in_parts() const { return burn_in_parts_; }
+    std::uint32_t omc_first_sample() const { return omc_ ? omc_->first_sample() : 0; }
 
     // For tests: the raw buffers.
     const ClBuffer& state() const { return state_; }
     const ClBuffer& values() const { return values_; }
+    const ClBuffer& picks() const { return picks_; } // (round, index) per chain
     cl_program program() const { return program_.p; }
 
   private:
@@ -181,8 +187,9 @@ class MltRenderer : public Integrator {
     mutable ClKernel k_owed_; // run by image(), which leaves the film as it was
     SceneBuffers scene_;
     ClBuffer state_, values_, stats_, picks_;
-    ClBuffer weight_;   // the target's weight per cell
-    TargetCells cells_; // in force: one cell of weight 1 until two-stage fixes them
+    ClBuffer weight_;         // the target's weight per cell
+    TargetCells cells_;       // in force: one cell of weight 1 until two-stage fixes them
+    BurnInFilm burn_in_film_; // where the burn-in's samples lie on the film
     MltFilm film_;
     Split split_;
     std::unique_ptr<PathTracer> omc_; // the OMC part's per-pixel samples (a split)
@@ -196,7 +203,6 @@ class MltRenderer : public Integrator {
     // The OMC part's path tracer for `split`.
     std::unique_ptr<PathTracer> make_omc_part(Split split) const;
     double omc_rate_ = 0, omc_owed_ = 0;
-    std::uint64_t step_rays_ = 0; // rays of the first step (a mutation's cost)
     // Runs the OMC part's samples owed after a step (of the chains, or
     // without them).
     void omc_after_step(bool chains);

@@ -9,9 +9,9 @@ namespace smallmlt {
 
 std::vector<std::string> pt_program_files(PtSampler sampler) {
     const char* source = sampler == PtSampler::Sobol ? "cl/sample_sobol.cl" : "cl/sample_omc.cl";
-    return {"cl/shared_types.h", "cl/rng.cl",    "cl/layout.cl",    source,
-            "cl/geometry.cl",    "cl/bvh.cl",    "cl/bsdf.cl",      "cl/light.cl",
-            "cl/path.cl",        "cl/camera.cl", "cl/kernels_pt.cl"};
+    return {"cl/shared_types.h", "cl/rng.cl",       "cl/layout.cl", "cl/sobol.cl", source,
+            "cl/geometry.cl",    "cl/bvh.cl",       "cl/bsdf.cl",   "cl/light.cl", "cl/path.cl",
+            "cl/camera.cl",      "cl/kernels_pt.cl"};
 }
 
 namespace {
@@ -43,13 +43,13 @@ PathTracer::PathTracer(const ClContext& cl, const DeviceScene& ds, std::uint64_t
 PathTracer::PathTracer(const ClContext& cl, const DeviceScene& ds, std::uint64_t seed,
                        const OmcPart& part)
     : cl_(cl), ds_(ds), seed_(seed), plan_(plan_pt(ds, max_alloc(cl, 0))),
-      program_(cl.build(pt_program_files(PtSampler::Sobol),
-                        ds.layout.defines() + split_defines(part.split) +
-                            "#define PT_OMC_PART 1\n")),
+      program_(
+          cl.build(pt_program_files(PtSampler::Sobol),
+                   ds.layout.defines() + split_defines(part.split) + "#define PT_OMC_PART 1\n")),
       kernel_(program_.p, "pt_render"), scene_(*part.scene),
       stats_(cl, CL_MEM_READ_WRITE, plan_.bytes("stats")),
-      band_pixels_(omc_scratch_pixels(pixels())), sample_offset_(0), sample_stride_(1),
-      host_(3 * pixels(), 0.0) {
+      band_pixels_(omc_scratch_pixels(pixels())), sample_offset_(part.first_sample),
+      sample_stride_(1), host_(3 * pixels(), 0.0) {
     bands_.emplace_back(cl_, CL_MEM_READ_WRITE, band_pixels_ * kPtFilmPixelBytes);
     stats_.fill_zero(cl_);
 }

@@ -32,6 +32,9 @@ std::vector<std::string> pt_program_files(PtSampler sampler);
 struct OmcPart {
     Split split = Split::Direct;
     const SceneBuffers* scene = nullptr;
+    // Each pixel's first Sobol sample number: those before it are the
+    // burn-in's (cl/burnin_film.cl).
+    std::uint32_t first_sample = 0;
 };
 
 class PathTracer : public Integrator {
@@ -53,6 +56,7 @@ class PathTracer : public Integrator {
     // Adds n samples per pixel (numbered spp() .. spp() + n - 1).
     void add_samples(std::uint32_t n);
     std::uint32_t spp() const { return spp_; }
+    std::uint32_t first_sample() const { return sample_offset_; }
     std::uint64_t rays() const;
     // Samples dropped because their radiance was NaN or infinite.
     std::uint64_t nonfinite() const;

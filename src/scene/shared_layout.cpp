@@ -42,6 +42,11 @@ SMALLMLT_CHECK_OFFSET(ChainValue, stay, 16);
 static_assert(kMaxDepth <= CHAIN_BOUNCES_MASK, "ChainValue.meta holds the live bounces");
 static_assert(sizeof(TargetCells) == 8, "TargetCells");
 SMALLMLT_CHECK_OFFSET(TargetCells, columns, 4);
+static_assert(sizeof(BurnInFilm) == 20, "BurnInFilm");
+SMALLMLT_CHECK_OFFSET(BurnInFilm, seed_hi, 4);
+SMALLMLT_CHECK_OFFSET(BurnInFilm, offset, 8);
+SMALLMLT_CHECK_OFFSET(BurnInFilm, step, 12);
+SMALLMLT_CHECK_OFFSET(BurnInFilm, per_round, 16);
 #undef SMALLMLT_CHECK_OFFSET
 
 std::vector<std::uint32_t> host_layout() {
@@ -75,7 +80,12 @@ std::vector<std::uint32_t> host_layout() {
             offsetof(ChainValue, meta),
             offsetof(ChainValue, stay),
             sizeof(TargetCells),
-            offsetof(TargetCells, columns)};
+            offsetof(TargetCells, columns),
+            sizeof(BurnInFilm),
+            offsetof(BurnInFilm, seed_hi),
+            offsetof(BurnInFilm, offset),
+            offsetof(BurnInFilm, step),
+            offsetof(BurnInFilm, per_round)};
 }
 
 } // namespace smallmlt

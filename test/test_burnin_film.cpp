@@ -1,0 +1,132 @@
+// Where the burn-in's samples lie on the film (cl/burnin_film.cl,
+// src/render/burn_in.hpp): every pixel gets its share of them, give or take
+// one, at Sobol sample numbers below the OMC part's first; the device puts
+// each where the host expects; a pixel's samples are its Sobol sequence's
+// (a (0,4,2)-net in every aligned block of 16); and a render's burn-in lands
+// where expected, with its OMC part going on after it.
+#include "base/rng.hpp"
+#include "render/burn_in.hpp"
+#include "render/mlt.hpp"
+#include "test_support.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <vector>
+
+using namespace smallmlt;
+
+namespace {
+
+// Samples per pixel of the burn-in's first `samples` samples.
+std::vector<std::uint64_t> counts(const BurnInFilm& f, std::uint32_t pixels,
+                                  std::uint64_t samples) {
+    std::vector<std::uint64_t> n(pixels, 0);
+    for (std::uint64_t g = 0; g < samples; ++g)
+        ++n.at(burn_in_film_sample(f, pixels, g).first);
+    return n;
+}
+
+} // namespace
+
+// Shares differ by at most one sample, every (pixel, Sobol number) is used
+// once and lies below burn_in_film_end, and fewer samples than pixels still
+// spread over the whole image (each quarter of the rows gets a quarter).
+TEST(BurnInFilm, EveryPixelGetsItsShare) {
+    struct Case {
+        std::uint32_t width, height, per_round, rounds;
+    };
+    for (Case c : {Case{8, 6, 37, 40}, Case{128, 128, 256, 32}, Case{128, 128, 16384, 4},
+                   Case{1, 1, 5, 3}, Case{4, 3, 1000, 2}, Case{100, 60, 600, 3}}) {
+        const std::uint32_t pixels = c.width * c.height;
+        const std::uint64_t samples = std::uint64_t(c.per_round) * c.rounds;
+        for (std::uint64_t seed : {1, 2, 3}) {
+            BurnInFilm f = burn_in_film(seed, derive_seed(seed, 9), pixels, c.per_round);
+            std::vector<std::uint64_t> n = counts(f, pixels, samples);
+            auto [lo, hi] = std::minmax_element(n.begin(), n.end());
+            EXPECT_LE(*hi - *lo, 1u) << c.width << "x" << c.height << " seed " << seed;
+            std::vector<std::vector<bool>> used(pixels);
+            const std::uint32_t end = burn_in_film_end(f, pixels, samples);
+            for (std::uint64_t g = 0; g < samples; ++g) {
+                auto [p, k] = burn_in_film_sample(f, pixels, g);
+                ASSERT_LT(k, end) << "sample " << g;
+                used[p].resize(end, false);
+                ASSERT_FALSE(used[p][k]) << "pixel " << p << " number " << k << " twice";
+                used[p][k] = true;
+            }
+        }
+    }
+    // 2,048 samples over 16,384 pixels: each quarter of the rows gets
+    // 512 +- 64.
+    BurnInFilm f = burn_in_film(5, 6, 128 * 128, 256);
+    std::uint64_t quarter[4] = {};
+    for (std::uint64_t g = 0; g < 2048; ++g)
+        ++quarter[burn_in_film_sample(f, 128 * 128, g).first / 128 / 32];
+    for (std::uint64_t q : quarter)
+        EXPECT_NEAR(double(q), 512.0, 64.0);
+}
+
+// The device places every sample in the pixel the host expects (13 x 7
+// pixels, whose film grid does not divide evenly), and in an 8 x 4 image
+// (grid cells of 2^21 film steps) the 16 samples of each pixel with Sobol
+// numbers 16..31 form a (0,4,2)-net over the pixel: for a = 0..4, each box
+// of 2^-a by 2^(a-4) of the pixel holds one.
+TEST(BurnInFilm, DeviceSamplesArePixelsSobolPoints) {
+    for (auto [w, h] : {std::pair{13u, 7u}, std::pair{8u, 4u}}) {
+        DeviceScene ds = prepare_scene(test::scene("cornell", int(w), int(h)));
+        MltOptions opt;
+        opt.threads = 64;
+        opt.extra_files = {"cl/kernels_probe_mlt.cl"};
+        MltRenderer mlt(test::cl(), ds, opt);
+        const std::uint32_t pixels = w * h, n = 40 * pixels;
+        BurnInFilm f = burn_in_film(21, 22, pixels, 37);
+        ClBuffer out(test::cl(), CL_MEM_WRITE_ONLY, std::size_t(n) * 3 * sizeof(cl_uint));
+        ClKernel k(mlt.program(), "probe_burnin_film");
+        k.set_args(f, ds.frame, cl_ulong(0), cl_uint(n), out);
+        k.run(test::cl(), n);
+        std::vector<cl_uint> v(std::size_t(n) * 3);
+        out.read(test::cl(), v.data());
+        std::vector<std::vector<std::pair<std::uint32_t, std::uint32_t>>> block(pixels);
+        for (std::uint32_t g = 0; g < n; ++g) {
+            auto [p, index] = burn_in_film_sample(f, pixels, g);
+            ASSERT_EQ(v[3 * g + 2], p) << w << "x" << h << " sample " << g;
+            if (index >= 16 && index < 32) block[p].push_back({v[3 * g], v[3 * g + 1]});
+        }
+        if (w != 8) continue;
+        for (std::uint32_t p = 0; p < pixels; ++p) {
+            ASSERT_EQ(block[p].size(), 16u) << "pixel " << p;
+            for (int a = 0; a <= 4; ++a) {
+                std::vector<int> box(16, 0);
+                for (auto [x, y] : block[p]) {
+                    std::uint32_t bx = (x >> 21 == p % w) ? (x >> (21 - a)) & ((1u << a) - 1) : 99;
+                    std::uint32_t by =
+                        (y >> 22 == p / w) ? (y >> (22 - (4 - a))) & ((1u << (4 - a)) - 1) : 99;
+                    ASSERT_LT(bx, 99u) << "pixel " << p << ": x outside it";
+                    ASSERT_LT(by, 99u) << "pixel " << p << ": y outside it";
+                    ++box[(by << a) | bx];
+                }
+                for (int b = 0; b < 16; ++b)
+                    EXPECT_EQ(box[b], 1) << "pixel " << p << ", a = " << a << ", box " << b;
+            }
+        }
+    }
+}
+
+// A render's burn-in (3 rounds of 256 samples over 13 x 7 pixels) lands
+// where burn_in_film_sample puts it, round by round, and the split's OMC part
+// begins each pixel's sequence after the burn-in's numbers.
+TEST(BurnInFilm, RenderBurnInLandsWhereExpected) {
+    DeviceScene ds = prepare_scene(test::scene("cornell", 13, 7));
+    MltOptions opt;
+    opt.threads = 256;
+    opt.burn_in_iters = 3;
+    opt.split = Split::Visible;
+    MltRenderer mlt(test::cl(), ds, opt);
+    mlt.prepare();
+    const std::uint32_t pixels = 13 * 7;
+    const std::uint64_t samples = 3 * 256;
+    EXPECT_EQ(mlt.burn_in_parts().count, counts(mlt.burn_in_film(), pixels, samples));
+    EXPECT_EQ(mlt.omc_first_sample(), burn_in_film_end(mlt.burn_in_film(), pixels, samples));
+    EXPECT_GT(mlt.omc_first_sample(), 0u);
+}
