@@ -17,17 +17,16 @@
 __kernel void mlt_luminance(__global const Triangle* tris, __global const BvhNode* nodes,
                             __global const Material* mats, __global const LightEntry* lights,
                             const Frame frame, __global const float* weight,
-                            const TargetCells cells, const BurnInFilm film,
-                            __global uint* state, const ulong seed, const uint round,
-                            const uint count, __global float* lum,
-                            __global float4* omc, __global ulong* stats) {
+                            const TargetCells cells, const BurnInFilm film, __global uint* state,
+                            const ulong seed, const uint round, const uint count,
+                            __global float* lum, __global float4* omc, __global ulong* stats) {
     __local uint l_count[MLT_COUNTS];
     uint i = get_global_id(0), nonfinite = 0u;
     mlt_zero_counts(l_count);
     barrier(CLK_LOCAL_MEM_FENCE);
     if (i < count) {
         SceneView sc = path_scene(tris, nodes, mats, lights, &frame);
-        MltTarget target = mlt_target(weight, cells, &frame);
+        MltTarget target = mlt_target(weight, cells, &frame, 0.0f);
         uint2 at = burnin_film(&film, &frame, (ulong)round * film.per_round + i);
         SampleSource src = smp_chain_start(state, 0u, 1u, rng_key(seed, i, 0u), at);
         EvalResult s = mlt_checked(eval_state(&sc, &frame, &src), &nonfinite);
@@ -56,7 +55,7 @@ __kernel void mlt_init(__global const Triangle* tris, __global const BvhNode* no
     barrier(CLK_LOCAL_MEM_FENCE);
     if (c < num_chains) {
         SceneView sc = path_scene(tris, nodes, mats, lights, &frame);
-        MltTarget target = mlt_target(weight, cells, &frame);
+        MltTarget target = mlt_target(weight, cells, &frame, 0.0f);
         uint2 pick = picks[c];
         ulong round_seed = rng_mix64(omc_seed * 0x9E3779B97F4A7C15UL + (ulong)pick.x);
         uint2 at = burnin_film(&film, &frame, (ulong)pick.x * film.per_round + pick.y);
@@ -73,7 +72,8 @@ __kernel void mlt_init(__global const Triangle* tris, __global const BvhNode* no
 /* One Metropolis step of every chain with K proposals each (split-transition
  * MLT; K = 1 is plain PSSMLT). Work-item t is proposal t % K of chain t / K;
  * a chain's K work-items sit in one work-group (K divides MLT_GROUP):
- * 1. each evaluates its proposal y_i and splats a_i F(y_i)/I(y_i);
+ * 1. each evaluates its proposal y_i and splats a_i F(y_i)/I(y_i) (with
+ *    Kelemen's weights, mlt_step.cl, (a_i + 1 if large) F(y_i)/(I(y_i) + p b0));
  * 2. they meet in local memory; the first picks the next state among
  *    (x, y_1..y_K) in proportion to (K - sum a_i, a_1, .., a_K), adds the
  *    stay weight K - sum a_i to x's gathered weight, splats that at x's
@@ -87,7 +87,7 @@ __kernel void mlt_step(__global const Triangle* tris, __global const BvhNode* no
                        const Frame frame, __global const float* weight, const TargetCells cells,
                        __global uint* state, __global ChainValue* values, const uint num_threads,
                        const uint proposals, const ulong seed, const uint iteration,
-                       const uint large_threshold, __global FilmWord* film0,
+                       const uint large_threshold, const float kelemen_pb, __global FilmWord* film0,
                        __global FilmWord* film1, __global FilmWord* film2, __global FilmWord* film3,
                        const FilmShape film_shape, __global ulong* stats, const uint stuck_run) {
     __local float l_a[MLT_GROUP];
@@ -97,7 +97,7 @@ __kernel void mlt_step(__global const Triangle* tris, __global const BvhNode* no
     MltThread th = mlt_thread(num_threads, proposals);
     uint c = th.active ? th.chain : 0u;
     SceneView sc = path_scene(tris, nodes, mats, lights, &frame);
-    MltTarget target = mlt_target(weight, cells, &frame);
+    MltTarget target = mlt_target(weight, cells, &frame, kelemen_pb);
     Film film = film_bind(film0, film1, film2, film3, film_shape);
     ChainValue x = values[c];
     ulong key = rng_key(seed, th.t, iteration);
@@ -108,8 +108,8 @@ __kernel void mlt_step(__global const Triangle* tris, __global const BvhNode* no
     float a = 0.0f;
     uint atomics = 0u, nonfinite = 0u;
     if (th.active)
-        a = mlt_try_proposal(&sc, &frame, &src, &target, chain_g(x), &film, key, &y, &nonfinite,
-                             &atomics);
+        a = mlt_try_proposal(&sc, &frame, &src, &target, chain_g(x), large, &film, key, &y,
+                             &nonfinite, &atomics);
 
     l_a[th.lid] = a;
     mlt_zero_counts(l_count);
@@ -143,14 +143,15 @@ __kernel void mlt_step(__global const Triangle* tris, __global const BvhNode* no
 #define MLT_OWED_UNDO 1u
 #define MLT_OWED_FLUSH 2u
 __kernel void mlt_owed(const Frame frame, __global const float* weight, const TargetCells cells,
-                       __global const uint* state, __global ChainValue* values,
-                       const uint num_chains, const ulong seed, const uint iteration,
-                       __global FilmWord* film0, __global FilmWord* film1, __global FilmWord* film2,
-                       __global FilmWord* film3, const FilmShape film_shape, const uint mode) {
+                       const float kelemen_pb, __global const uint* state,
+                       __global ChainValue* values, const uint num_chains, const ulong seed,
+                       const uint iteration, __global FilmWord* film0, __global FilmWord* film1,
+                       __global FilmWord* film2, __global FilmWord* film3,
+                       const FilmShape film_shape, const uint mode) {
     uint c = get_global_id(0);
     if (c >= num_chains) return;
     Film film = film_bind(film0, film1, film2, film3, film_shape);
-    MltTarget target = mlt_target(weight, cells, &frame);
+    MltTarget target = mlt_target(weight, cells, &frame, kelemen_pb);
     ChainValue x = values[c];
     if (!x.stay) return;
     mlt_splat_state(&frame, &target, state, c, num_chains, x, chain_stay_weight(x.stay), &film,

@@ -6,7 +6,13 @@
  * keeps G(x) = F(x) w(x), so that I(x) = lum(G(x)). Splats use expected
  * values: a proposal y adds a * F(y)/I(y) at its pixel and the chain's state
  * x adds its stay weight * F(x)/I(x) at x's, with a = min(1, I(y)/I(x)), so
- * every splat has luminance equal to its weight over w <= its weight. x's
+ * every splat has luminance equal to its weight over w <= its weight. With
+ * Kelemen's weights (Kelemen et al. 2002, section 5; MltTarget.kelemen_pb =
+ * p b0 > 0), a large proposal is also an independent sample of the image,
+ * and the two estimates are combined by the balance heuristic: every splat's
+ * 1/I becomes 1/(I + p b0) and a large proposal adds 1 to its a, so the
+ * splat's luminance stays at most its weight, which is at most 2 per
+ * mutation (src/render/mlt_film.hpp). x's
  * stay weights are gathered in its ChainValue and splatted once, when the
  * chain moves away (MLT_EAGER_STAY, the reference build, splats them at
  * every step). Splats go to the film through 32-bit atomics (cl/film.cl);
@@ -14,16 +20,25 @@
  * to the group's own row of stats, so the only global atomics are the
  * film's. */
 
-/* The target's weights: w >= 1 per cell of TargetCells. */
+/* The target's weights, w >= 1 per cell of TargetCells, and what a splat
+ * weighs. */
 typedef struct {
     __global const float* weight;
     TargetCells cells;
-    uint width; /* the film's, in pixels */
+    uint width;       /* the film's, in pixels */
+    float kelemen_pb; /* p b0 with Kelemen's weights; 0: expected values alone */
 } MltTarget;
 
-inline MltTarget mlt_target(__global const float* weight, TargetCells cells, const Frame* frame) {
-    MltTarget t = {weight, cells, frame->width};
+inline MltTarget mlt_target(__global const float* weight, TargetCells cells, const Frame* frame,
+                            float kelemen_pb) {
+    MltTarget t = {weight, cells, frame->width, kelemen_pb};
     return t;
+}
+
+/* What a splat at target value i keeps of its expected-value weight:
+ * i / (i + p b0) with Kelemen's weights, else 1. */
+inline float mlt_kelemen(const MltTarget* t, float i) {
+    return t->kelemen_pb > 0.0f ? i / (i + t->kelemen_pb) : 1.0f;
 }
 
 /* w at a pixel. */
@@ -122,16 +137,18 @@ inline EvalResult mlt_evaluate(const SceneView* sc, const Frame* frame, SampleSo
 }
 
 /* Evaluates the proposal y (y->f = G(y)), splats a * F(y)/I(y) at its pixel
- * and returns a = min(1, I(y)/I(x)) (1 where I(x) = 0), for a chain at x
- * with G(x) = gx. */
+ * (Kelemen's weights: (a + 1 if large) * F(y)/(I(y) + p b0)) and returns
+ * a = min(1, I(y)/I(x)) (1 where I(x) = 0), for a chain at x with
+ * G(x) = gx. */
 inline float mlt_try_proposal(const SceneView* sc, const Frame* frame, SampleSource* src,
-                              const MltTarget* target, float3 gx, const Film* film, ulong key,
-                              EvalResult* y, uint* nonfinite, uint* atomics) {
+                              const MltTarget* target, float3 gx, bool large, const Film* film,
+                              ulong key, EvalResult* y, uint* nonfinite, uint* atomics) {
     float ix = path_luminance(gx), wy;
     *y = mlt_evaluate(sc, frame, src, target, nonfinite, &wy);
     float iy = path_luminance(y->f);
     float a = ix > 0.0f ? fmin(1.0f, iy / ix) : 1.0f;
-    *atomics += film_splat(film, y->pixel, y->f, a / wy, key, MLT_DIM_ROUND_Y, false);
+    float w = (large && target->kelemen_pb > 0.0f ? a + 1.0f : a) * mlt_kelemen(target, iy);
+    *atomics += film_splat(film, y->pixel, y->f, w / wy, key, MLT_DIM_ROUND_Y, false);
     return a;
 }
 
@@ -151,13 +168,16 @@ inline uint mlt_state_pixel(const Frame* frame, __global const uint* state, uint
                       pss_load(state, chain, chains, layout_film(1u)));
 }
 
-/* Splats w * F(x)/I(x) at the pixel of chain's state x (subtracts it with
- * `undo`); returns the global atomics it made. */
+/* Splats w * F(x)/I(x) (Kelemen's weights: w * F(x)/(I(x) + p b0)) at the
+ * pixel of chain's state x (subtracts it with `undo`); returns the global
+ * atomics it made. */
 inline uint mlt_splat_state(const Frame* frame, const MltTarget* target, __global const uint* state,
                             uint chain, uint chains, ChainValue x, float w, const Film* film,
                             ulong key, uint dim, bool undo) {
     uint pixel = mlt_state_pixel(frame, state, chain, chains);
-    return film_splat(film, pixel, chain_g(x), w / mlt_weight(target, pixel), key, dim, undo);
+    float3 g = chain_g(x);
+    w *= mlt_kelemen(target, path_luminance(g)) / mlt_weight(target, pixel);
+    return film_splat(film, pixel, g, w, key, dim, undo);
 }
 
 /* The step's number for choosing the next state: uniform in [0, K). */

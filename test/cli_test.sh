@@ -105,7 +105,9 @@ check split_name 2 "--split indirect: expected none, visible, direct, all or aut
 check omc_effort_negative 2 "--omc-effort: '-1' is not a number >= 0" -- "$BIN" render scenes/cornell.scene --omc-effort -1
 check split_summary 0 "split visible: OMC part" -- "$BIN" render scenes/cornell.scene --split visible --threads 1024 --burn-in-iters 2 --width 16 --height 16 --spp 8 --out "$DIR/split.png"
 check target_name 2 "--target: 'kelemen' is not a target (luminance or two-stage)" -- "$BIN" render scenes/cornell.scene --target kelemen
+check weights_name 2 "--weights: 'veach' is not a weighting (expected or kelemen)" -- "$BIN" render scenes/cornell.scene --weights veach
 check target_summary 0 "target two-stage (" -- "$BIN" render scenes/cornell-water.scene --split visible --target two-stage --threads 1024 --burn-in-iters 4 --width 16 --height 16 --spp 8 --out "$DIR/two-stage.png"
+check weights_summary 0 "Kelemen's weights (p b0 = " -- "$BIN" render scenes/cornell-water.scene --split visible --weights kelemen --threads 1024 --burn-in-iters 4 --width 16 --height 16 --spp 8 --out "$DIR/kelemen.png"
 check large_step_range 2 "--large-step: '1.5' is not a probability" -- "$BIN" render scenes/cornell.scene --large-step 1.5
 check sampler_bad 2 "--sampler: 'halton' is not a sampler (sobol or random)" -- "$BIN" render scenes/cornell.scene --sampler halton
 check rr_threshold_zero 2 "--rr-threshold: '0' is not a positive number" -- "$BIN" render scenes/cornell.scene --rr-threshold 0
@@ -115,7 +117,7 @@ check rr_by_bad 2 "--rr-by: 'min' is not a measure (max or luminance)" -- "$BIN"
 check rr_start_range 2 "--rr-start: 65 is out of range" -- "$BIN" render scenes/cornell.scene --rr-start 65
 check threads_zero 2 "--threads: 0 is out of range" -- "$BIN" render scenes/cornell.scene --threads 0
 check stuck_run_zero 2 "--stuck-run: 0 is out of range" -- "$BIN" render scenes/cornell.scene --stuck-run 0
-check stuck_note 0 "stayed on one path for 100 steps or more" -- "$BIN" render scenes/tiny-caustic.scene --width 16 --height 16 --threads 1024 --spp 2400 --split visible --stuck-run 100 --out "$DIR/stuck.pfm"
+check stuck_note 0 "stayed on one path for 100 steps or more" -- "$BIN" render scenes/tiny-caustic.scene --width 16 --height 16 --threads 1024 --spp 2400 --split visible --large-step 0.1 --stuck-run 100 --out "$DIR/stuck.pfm"
 check stuck_summary 0 "longest run of rejections" -- "$BIN" render scenes/cornell.scene --width 8 --height 8 --spp 4 --threads 64 --out "$DIR/stuck2.pfm"
 check render_quiet 0 "" -- "$BIN" render scenes/cornell.scene --width 8 --height 8 --spp 1 --quiet --out "$DIR/q.exr"
 for f in ok.png ok.pfm q.exr mlt.pfm default.png dark.pfm w16.pfm w16p.pfm; do

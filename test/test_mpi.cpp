@@ -145,7 +145,7 @@ TEST(MpiRender, RanksGiveTheImageOfTheirKeys) {
                             "--burn-in-iters 4 --seed 9";
     const std::string pt = "scenes/cornell-water.scene --method pt --width 24 --height 24 --spp 7";
     // The split's OMC part and the burn-in's sums go into the tallies too.
-    for (const Case& c : {Case{mlt + " --split none", 2, true},
+    for (const Case& c : {Case{mlt + " --split none --weights expected", 2, true},
                           Case{mlt + " --split direct", 3, false}, Case{pt, 3, false}}) {
         std::string out = dir + "/np" + std::to_string(c.ranks) + ".pfm";
         Image job = run_job(c.args, c.ranks, out);

@@ -94,7 +94,13 @@ MLT options:
                      get as many mutations per pixel as bright ones
                      (doc/design.md, "The target")
   --large-step P     probability that a mutation draws a whole new path
-                     (default 0.1 with burn-in, 0.5 without)
+                     (default 0.3 with burn-in, 0.1 with burn-in and
+                     --weights expected, 0.5 without burn-in)
+  --weights kelemen|expected  what a splat weighs: Kelemen's weights (the
+                     default), which also count every large step as an
+                     independent sample, or its expected value alone, with
+                     which the image's mean is b (doc/design.md, "Kelemen's
+                     weights")
   --stuck-run R      a chain that rejects R proposals in a row counts as stuck
                      (default 1000); the summary gives how many did and the
                      longest run, and a note warns when any did
@@ -256,6 +262,11 @@ RenderOptions parse_render(ArgReader& r) {
             o.split = parse_split(flag, r.value(flag, arg));
         } else if (flag == "--target") {
             o.target = parse_target(flag, r.value(flag, arg));
+        } else if (flag == "--weights") {
+            std::string w = r.value(flag, arg);
+            if (w != "expected" && w != "kelemen")
+                throw UsageError("--weights: '" + w + "' is not a weighting (expected or kelemen)");
+            o.kelemen = w == "kelemen";
         } else if (flag == "--omc-effort") {
             o.omc_effort = to_non_negative(flag, r.value(flag, arg));
         } else if (flag == "--stuck-run") {
@@ -354,7 +365,9 @@ RenderOptions parse_render(ArgReader& r) {
         throw UsageError("--reference-mask " + o.reference_mask +
                          ": give --reference, the image to measure against");
     if (!o.large_step)
-        o.large_step = o.burn_in ? kDefaultLargeStepBurnIn : kDefaultLargeStepNoBurnIn;
+        o.large_step = !o.burn_in  ? kDefaultLargeStepNoBurnIn
+                       : o.kelemen ? kDefaultLargeStepKelemen
+                                   : kDefaultLargeStepBurnIn;
     return o;
 }
 

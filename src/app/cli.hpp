@@ -12,7 +12,11 @@
 namespace smallmlt {
 
 constexpr std::uint32_t kDefaultSpp = 16;
-constexpr float kDefaultLargeStepBurnIn = 0.1f;   // with OMC burn-in (doc/RESULTS.md)
+// Defaults chosen by the benches of doc/RESULTS.md: Kelemen's weights, with
+// which large steps pay more often than with expected values alone.
+constexpr bool kDefaultKelemen = true;
+constexpr float kDefaultLargeStepKelemen = 0.3f;  // with burn-in and Kelemen's weights
+constexpr float kDefaultLargeStepBurnIn = 0.1f;   // with burn-in and expected values
 constexpr float kDefaultLargeStepNoBurnIn = 0.5f; // the paper's baseline without
 
 enum class Method { Pt, Mlt };
@@ -28,6 +32,7 @@ struct RenderOptions {
     bool film_atomics64 = false;        // --film-atomics 64
     Split split = kDefaultSplit;        // --split
     Target target = kDefaultTarget;     // --target
+    bool kelemen = kDefaultKelemen;     // --weights kelemen
     double omc_effort = 1.0;            // --omc-effort
     bool burn_in = true;
     std::uint32_t burn_in_iters = MltOptions().burn_in_iters;

@@ -112,6 +112,7 @@ std::unique_ptr<Integrator> make_integrator(const RenderOptions& o, const ClCont
     m.film_atomics64 = o.film_atomics64;
     m.split = o.split;
     m.target = o.target;
+    m.kelemen = o.kelemen;
     m.omc_effort = o.omc_effort;
     return std::make_unique<MltRenderer>(cl, ds, m);
 }

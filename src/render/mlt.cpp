@@ -99,7 +99,7 @@ MltRenderer::MltRenderer(const ClContext& cl, const DeviceScene& ds, const MltOp
                                            std::uint32_t(pixels()), opt.threads)),
       film_(cl, pixels(),
             plan_mlt_film(pixels(), opt.threads, max_alloc(cl, opt), opt.film_atomics64,
-                          opt.film_pass_mutations)) {
+                          opt.film_pass_mutations, opt.kelemen ? 2.0 : 1.0)) {
     split_ = opt.split;
     if (opt.split != Split::None || opt.target == Target::TwoStage)
         burn_in_parts_ = BurnInParts(pixels());
@@ -210,6 +210,9 @@ double MltRenderer::b_rel_error() const {
 void MltRenderer::prepare(RankGroup& ranks) {
     Clock::time_point t0 = Clock::now();
     sample_starts(ranks);
+    if (opt_.kelemen)
+        kelemen_pb_ = float(std::clamp(double(opt_.large_step), 0.0, 1.0) *
+                            mlt_b(burn_in_fixed_, burn_in_samples_));
     if (split_ == Split::Auto) {
         bool pay = ranks.all(chains_pay(mlt_relative_variance()));
         split_ = pay ? kChainsSplit : Split::All;
@@ -247,10 +250,10 @@ void MltRenderer::init_chains() {
 }
 
 void MltRenderer::owed(std::uint32_t mode) const {
-    k_owed_.set_args(ds_.frame, weight_, cells_, state_, values_, cl_uint(chains()),
-                     cl_ulong(derive_seed(opt_.seed, kPurposeStep)), cl_uint(iterations_),
-                     film_.band(0), film_.band(1), film_.band(2), film_.band(3), film_.plan().shape,
-                     cl_uint(mode));
+    k_owed_.set_args(ds_.frame, weight_, cells_, cl_float(kelemen_pb_), state_, values_,
+                     cl_uint(chains()), cl_ulong(derive_seed(opt_.seed, kPurposeStep)),
+                     cl_uint(iterations_), film_.band(0), film_.band(1), film_.band(2),
+                     film_.band(3), film_.plan().shape, cl_uint(mode));
     k_owed_.enqueue(cl_, chains());
 }
 
@@ -268,9 +271,9 @@ void MltRenderer::step(std::uint32_t n) {
             ++steps_run_;
             k_step_.set_args(scene_.tris, scene_.nodes, scene_.mats, scene_.lights, ds_.frame,
                              weight_, cells_, state_, values_, cl_uint(opt_.threads),
-                             cl_uint(opt_.proposals), seed, iteration, threshold, film_.band(0),
-                             film_.band(1), film_.band(2), film_.band(3), film_.plan().shape,
-                             stats_, cl_uint(opt_.stuck_run));
+                             cl_uint(opt_.proposals), seed, iteration, threshold,
+                             cl_float(kelemen_pb_), film_.band(0), film_.band(1), film_.band(2),
+                             film_.band(3), film_.plan().shape, stats_, cl_uint(opt_.stuck_run));
             k_step_.enqueue(cl_, opt_.threads);
             // The pass ends: every chain splats what it owes, and the film's
             // words go to the host before the next pass could overflow them.
@@ -419,6 +422,10 @@ std::string MltRenderer::summary(double) const {
                       split_name(split_), opt_.split == Split::Auto ? " (auto)" : "", omc_->spp(),
                       double(opt_.threads) * std::max(1u, opt_.burn_in_iters) / double(pixels()),
                       omc_rate_, mlt_relative_variance());
+        out += buf;
+    }
+    if (opt_.kelemen && steps_run_ > 0) {
+        std::snprintf(buf, sizeof buf, "; Kelemen's weights (p b0 = %.4g)", double(kelemen_pb_));
         out += buf;
     }
     if (opt_.target == Target::TwoStage && steps_run_ > 0) {

@@ -55,6 +55,11 @@ struct MltOptions {
     double omc_effort = 1.0;
     // The chains' target (src/render/target.hpp).
     Target target = Target::Luminance;
+    // Kelemen's weights (Kelemen et al. 2002, section 5; cl/mlt_step.cl):
+    // large steps also count as independent samples, combined with the
+    // chains' expected values by the balance heuristic. Off: expected values
+    // alone, and the image's mean is b.
+    bool kelemen = false;
     // The file that defines eval_state: cl/eval_path.cl renders the scene;
     // the sampler tests use cl/eval_target.cl, a known target (2D, or with
     // bounces on a layout that has bounce slots).
@@ -203,6 +208,7 @@ class MltRenderer : public Integrator {
     // The OMC part's path tracer for `split`.
     std::unique_ptr<PathTracer> make_omc_part(Split split) const;
     double omc_rate_ = 0, omc_owed_ = 0;
+    float kelemen_pb_ = 0; // p b0 of Kelemen's weights, b0 from the burn-in; 0 without
     // Runs the OMC part's samples owed after a step (of the chains, or
     // without them).
     void omc_after_step(bool chains);

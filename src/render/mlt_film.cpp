@@ -15,13 +15,14 @@ constexpr double kFloatSlack = 1.0 + 1.0 / 1024;
 
 } // namespace
 
-double film_pass_bound(std::uint32_t threads, std::uint32_t steps, std::uint32_t frac_bits) {
+double film_pass_bound(std::uint32_t threads, std::uint32_t steps, std::uint32_t frac_bits,
+                       double weight) {
     double mutations = double(threads) * double(steps);
-    return mutations * (std::ldexp(1.0, int(frac_bits)) / kBlueShare * kFloatSlack + 3.0);
+    return mutations * (weight * std::ldexp(1.0, int(frac_bits)) / kBlueShare * kFloatSlack + 3.0);
 }
 
 MltFilmPlan plan_mlt_film(std::uint64_t pixels, std::uint32_t threads, std::uint64_t max_alloc,
-                          bool atomics64, std::uint64_t pass_mutations) {
+                          bool atomics64, std::uint64_t pass_mutations, double weight) {
     MltFilmPlan p;
     p.atomics64 = atomics64;
     std::uint64_t word = atomics64 ? 8 : 4;
@@ -43,7 +44,7 @@ MltFilmPlan plan_mlt_film(std::uint64_t pixels, std::uint32_t threads, std::uint
         std::uint32_t t = std::max(threads, 1u);
         p.steps_per_drain = std::uint32_t(std::max<std::uint64_t>(1, pass_mutations / t));
         std::uint32_t f = kFilmMaxFracBits;
-        while (f > 0 && film_pass_bound(t, p.steps_per_drain, f) > kWordLimit)
+        while (f > 0 && film_pass_bound(t, p.steps_per_drain, f, weight) > kWordLimit)
             --f;
         if (f == 0)
             throw InputError("--threads " + std::to_string(threads) +

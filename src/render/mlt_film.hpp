@@ -15,7 +15,8 @@
 // Hence, even if every splat of the pass lands on one pixel, a word holds at
 // most T S (2^F / 0.0722 (1 + 2^-10) + 3) (the 2^-10 covers float rounding
 // and the 2^-24 rounding of gathered stays), which plan_film keeps below
-// 2^32.
+// 2^32. With Kelemen's weights (cl/mlt_step.cl) a large proposal adds up to
+// 1 more, so a step adds at most 2K: the first term doubles.
 #pragma once
 #include "device/memory_plan.hpp"
 #include "device/ocl.hpp"
@@ -37,15 +38,18 @@ struct MltFilmPlan {
 };
 
 // The bound above: the largest value a word can reach in a pass of `steps`
-// steps of `threads` threads with `frac_bits` fraction bits.
-double film_pass_bound(std::uint32_t threads, std::uint32_t steps, std::uint32_t frac_bits);
+// steps of `threads` threads with `frac_bits` fraction bits, when a
+// mutation adds at most `weight` (1; 2 with Kelemen's weights).
+double film_pass_bound(std::uint32_t threads, std::uint32_t steps, std::uint32_t frac_bits,
+                       double weight = 1);
 
 // S = max(1, pass_mutations / T) steps per drain and the most fraction
 // bits F <= kFilmMaxFracBits whose bound stays below 2^32, or, with
 // atomics64, one 64-bit band of FILM64_FRAC_BITS drained never. Throws
 // InputError if the bands exceed FILM_MAX_BANDS or not even F = 1 fits.
 MltFilmPlan plan_mlt_film(std::uint64_t pixels, std::uint32_t threads, std::uint64_t max_alloc,
-                          bool atomics64, std::uint64_t pass_mutations = kFilmPassMutations);
+                          bool atomics64, std::uint64_t pass_mutations = kFilmPassMutations,
+                          double weight = 1);
 
 class MltFilm {
   public:

@@ -9,11 +9,16 @@ namespace smallmlt {
 
 const char* split_name(Split s) {
     switch (s) {
-    case Split::None: return "none";
-    case Split::Visible: return "visible";
-    case Split::Direct: return "direct";
-    case Split::All: return "all";
-    case Split::Auto: return "auto";
+    case Split::None:
+        return "none";
+    case Split::Visible:
+        return "visible";
+    case Split::Direct:
+        return "direct";
+    case Split::All:
+        return "all";
+    case Split::Auto:
+        return "auto";
     }
     return "?";
 }
@@ -26,11 +31,16 @@ Split parse_split(const std::string& flag, const std::string& name) {
 
 std::uint32_t split_vertices(Split s) {
     switch (s) {
-    case Split::None: return 0;
-    case Split::Visible: return 1;
-    case Split::Direct: return 2;
-    case Split::All: return 255; // more vertices than any path has (kMaxDepth 64)
-    case Split::Auto: return split_vertices(kChainsSplit);
+    case Split::None:
+        return 0;
+    case Split::Visible:
+        return 1;
+    case Split::Direct:
+        return 2;
+    case Split::All:
+        return 255; // more vertices than any path has (kMaxDepth 64)
+    case Split::Auto:
+        return split_vertices(kChainsSplit);
     }
     return 0;
 }

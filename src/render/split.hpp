@@ -47,12 +47,12 @@ std::string split_defines(Split s);
 // The OMC part then takes n_o = (t_o / t_m) T c_m / (P c_o) samples per
 // pixel per step of T threads. tau is measured (doc/RESULTS.md, "Split").
 struct SplitCosts {
-    double omc_variance = 0;   // V_o
-    double b = 0;              // the MLT part's mean luminance
-    double pixels = 0;         // P
-    double omc_rays = 0;       // c_o
-    double mutation_rays = 0;  // c_m
-    double threads = 0;        // T
+    double omc_variance = 0;  // V_o
+    double b = 0;             // the MLT part's mean luminance
+    double pixels = 0;        // P
+    double omc_rays = 0;      // c_o
+    double mutation_rays = 0; // c_m
+    double threads = 0;       // T
 };
 constexpr double kChainCorrelation = 8.0; // tau
 
