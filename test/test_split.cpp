@@ -2,8 +2,8 @@
 // (src/render/split.hpp): the parts add up to the path tracer's estimate,
 // path by path and in the furnace's closed form, and the rule that divides
 // the time between them.
-#include "render/mlt.hpp"
 #include "base/error.hpp"
+#include "render/mlt.hpp"
 #include "render/split.hpp"
 #include "test_support.hpp"
 
@@ -181,4 +181,25 @@ TEST(Split, AutoRunsChainsOnlyWhereTheyPay) {
     MltRenderer o(test::cl(), water, opt);
     o.prepare(outvoted);
     EXPECT_EQ(o.split(), Split::All) << "the ranks did not agree";
+}
+
+// The OMC part's calls: chunks of a power of two, at most 16, at most
+// spp / 16 and at most 2^18 paths, growing with the samples so far (so they
+// do not depend on how steps are grouped into passes).
+TEST(Split, OmcChunksGrowWithTheSamples) {
+    const std::uint64_t p = 128 * 128;
+    EXPECT_EQ(omc_chunk(0, p), 1u);
+    EXPECT_EQ(omc_chunk(31, p), 1u);
+    EXPECT_EQ(omc_chunk(32, p), 2u);
+    EXPECT_EQ(omc_chunk(63, p), 2u);
+    EXPECT_EQ(omc_chunk(127, p), 4u);
+    EXPECT_EQ(omc_chunk(128, p), 8u);
+    EXPECT_EQ(omc_chunk(255, p), 8u);
+    EXPECT_EQ(omc_chunk(512, p), 16u);
+    EXPECT_EQ(omc_chunk(1u << 30, p), 16u);
+    EXPECT_EQ(omc_chunk(1u << 30, 256 * 256), 4u);
+    EXPECT_EQ(omc_chunk(1u << 30, 512 * 512), 1u);
+    EXPECT_EQ(omc_chunk(1u << 30, 1024 * 1024), 1u);
+    for (std::uint32_t spp = 16; spp < 5000; ++spp)
+        EXPECT_LE(omc_chunk(spp, p), spp / 16) << spp;
 }

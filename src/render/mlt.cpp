@@ -312,12 +312,22 @@ void MltRenderer::omc_after_step(bool chains) {
     } else {
         omc_owed_ += omc_rate_;
     }
-    // Whole samples as soon as they are owed, so that the host's sums, and
-    // the image, do not depend on how steps are grouped into passes.
-    std::uint32_t k = std::uint32_t(std::min(omc_owed_, 4096.0));
-    if (k == 0) return;
-    omc_->add_samples(k);
-    omc_owed_ -= k;
+    // Whole chunks as soon as they are owed: the chunks depend only on the
+    // samples so far, so the host's sums, and the image, do not depend on how
+    // steps are grouped into passes.
+    const std::uint64_t p = pixels();
+    for (std::uint32_t k = omc_chunk(omc_->spp(), p); omc_owed_ >= k;
+         k = omc_chunk(omc_->spp(), p)) {
+        omc_->add_samples(k);
+        omc_owed_ -= k;
+    }
+}
+
+std::uint32_t omc_chunk(std::uint32_t spp, std::uint64_t pixels) {
+    std::uint32_t k = 1;
+    while (k < 16 && 32 * k <= spp && 2 * k * pixels <= (1u << 18))
+        k *= 2;
+    return k;
 }
 
 bool MltRenderer::finished() const {
@@ -370,7 +380,7 @@ std::vector<std::string> MltRenderer::notes() const {
         out.push_back("no OMC sample of " +
                       std::to_string(std::uint64_t(opt_.threads) * opt_.burn_in_iters) +
                       " carried light (b = 0): the image is black; is the scene lit?");
-    else if (prepared_ && be.rel_error > kMaxBRelError) {
+    else if (prepared_ && split_ != Split::All && be.rel_error > kMaxBRelError) {
         char buf[240];
         std::snprintf(buf, sizeof buf,
                       "few OMC samples carried light: b = %.5g has a relative standard error "

@@ -67,6 +67,14 @@ struct MltOptions {
     std::vector<std::string> extra_files; // appended to the program (test probes)
 };
 
+// The OMC part's samples per pixel in its next call, after `spp` of them on
+// a film of `pixels`: a power of two, at most 16, at most spp / 16 and at
+// most 2^18 paths (1 if even one sample per pixel is more), so that a call's
+// fixed cost (a launch, and reading its band back) is spread over several
+// samples, a call stays short, and what a render leaves owed at its end
+// stays below a 16th of the samples.
+std::uint32_t omc_chunk(std::uint32_t spp, std::uint64_t pixels);
+
 // Throws InputError naming the device if it lacks what the options need:
 // 64-bit atomics for the 64-bit reference film.
 void mlt_require_device(const DeviceInfo& d, const MltOptions& opt);

@@ -78,7 +78,10 @@ LoopResult render_loop(Integrator& m, const LoopLimits& limits, ConvergenceLog* 
         double next = limits.pass_s / per_unit;
         if (limits.time_s)
             next = std::min(next, std::max(1.0, (*limits.time_s - clock.now()) / per_unit));
-        batch = std::uint32_t(std::clamp(next, 1.0, double(kMaxPassUnits)));
+        // At most twice the last pass: a unit's cost may come in lumps (the
+        // split's OMC part renders in chunks), and a pass that happened to
+        // cost nothing must not set the next to the largest.
+        batch = std::uint32_t(std::clamp(next, 1.0, std::min(double(kMaxPassUnits), 2.0 * n)));
     }
     r.render_s = clock.now();
     progress.finish();
