@@ -14,8 +14,12 @@ LDFLAGS  += -fsanitize=address,undefined
 export LSAN_OPTIONS := suppressions=$(CURDIR)/test/lsan.supp print_suppressions=0
 endif
 
-DEB_PACKAGES := g++ make pocl-opencl-icd ocl-icd-opencl-dev opencl-headers libstb-dev gnuplot-nox \
-                libtinyobjloader-dev libtinyexr-dev libgtest-dev libopenmpi-dev openmpi-bin
+DEB_PACKAGES := g++ make pocl-opencl-icd mesa-opencl-icd ocl-icd-opencl-dev opencl-headers \
+                libstb-dev gnuplot-nox libtinyobjloader-dev libtinyexr-dev libgtest-dev \
+                libopenmpi-dev openmpi-bin
+# Mesa's OpenCL (rusticl) on the CPU (llvmpipe), as the only platform: the
+# compiler of Linux's small GPUs (doc/devices.md).
+RUSTICL_ENV  := OCL_ICD_VENDORS=/etc/OpenCL/vendors/rusticl.icd RUSTICL_ENABLE=swrast
 
 # `make fuzz` only: libFuzzer comes with clang's runtime libraries.
 FUZZ_PACKAGES := clang libclang-rt-dev
@@ -39,7 +43,7 @@ TEST_OPT   := $(if $(filter 1,$(SAN)),,-O1 -g0)
 MPICXX     := $(shell command -v mpicxx 2>/dev/null)
 MPI_BIN    := $(if $(MPICXX),$(BUILD)/smallmlt-mpi)
 
-.PHONY: all deps deps-fuzz run test bench bench-quick mutants fuzz format clean
+.PHONY: all deps deps-fuzz run test test-rusticl bench bench-quick mutants fuzz format clean
 
 all: $(BIN) $(MPI_BIN)
 
@@ -95,6 +99,11 @@ run: deps
 test: deps
 	$(MAKE) -j$(JOBS) all $(TEST_BIN)
 	SMALLMLT_BIN=$(BIN) sh test/run_all.sh $(TEST_BIN)
+
+# Every test on Mesa's OpenCL alone (make test runs a subset there).
+test-rusticl: deps
+	$(MAKE) -j$(JOBS) all $(TEST_BIN)
+	$(RUSTICL_ENV) RUSTICL_TESTS=none SMALLMLT_BIN=$(BIN) sh test/run_all.sh $(TEST_BIN)
 
 bench: deps
 	$(MAKE) all

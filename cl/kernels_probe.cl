@@ -1,48 +1,60 @@
 /* Probe kernels for tests: they report what the device sees, so the host
  * can check it agrees (struct layout, BVH traversal). */
 
-#define PROBE_OFFSET(T, field) ((uint)((size_t) & ((T*)0)->field))
+/* Offset of a field within an object of the kernel's own: offsets taken
+ * from a null pointer come out wrong where null is not address 0 (Mesa's
+ * OpenCL gives every field one byte less). */
+#define PROBE_OFFSET(obj, field)                                                                   \
+    ((uint)((__private const char*)&(obj).field - (__private const char*)&(obj)))
 
 /* Writes sizeof and field offsets of every shared struct, in the order that
- * src/shared_layout.cpp expects. */
+ * src/scene/shared_layout.cpp expects. */
 __kernel void probe_layout(__global uint* out) {
+    Triangle tri;
+    BvhNode node;
+    Material mat;
+    LightEntry light;
+    Frame frame;
+    ChainValue value;
+    TargetCells cells;
+    BurnInFilm film;
     uint i = 0;
     out[i++] = sizeof(Triangle);
-    out[i++] = PROBE_OFFSET(Triangle, material);
-    out[i++] = PROBE_OFFSET(Triangle, e1);
-    out[i++] = PROBE_OFFSET(Triangle, light_pick_prob);
-    out[i++] = PROBE_OFFSET(Triangle, e2);
-    out[i++] = PROBE_OFFSET(Triangle, light_index);
+    out[i++] = PROBE_OFFSET(tri, material);
+    out[i++] = PROBE_OFFSET(tri, e1);
+    out[i++] = PROBE_OFFSET(tri, light_pick_prob);
+    out[i++] = PROBE_OFFSET(tri, e2);
+    out[i++] = PROBE_OFFSET(tri, light_index);
     out[i++] = sizeof(BvhNode);
-    out[i++] = PROBE_OFFSET(BvhNode, offset);
-    out[i++] = PROBE_OFFSET(BvhNode, hi);
-    out[i++] = PROBE_OFFSET(BvhNode, count);
+    out[i++] = PROBE_OFFSET(node, offset);
+    out[i++] = PROBE_OFFSET(node, hi);
+    out[i++] = PROBE_OFFSET(node, count);
     out[i++] = sizeof(Material);
-    out[i++] = PROBE_OFFSET(Material, type);
-    out[i++] = PROBE_OFFSET(Material, ke);
-    out[i++] = PROBE_OFFSET(Material, ior);
-    out[i++] = PROBE_OFFSET(Material, ks);
-    out[i++] = PROBE_OFFSET(Material, emissive);
+    out[i++] = PROBE_OFFSET(mat, type);
+    out[i++] = PROBE_OFFSET(mat, ke);
+    out[i++] = PROBE_OFFSET(mat, ior);
+    out[i++] = PROBE_OFFSET(mat, ks);
+    out[i++] = PROBE_OFFSET(mat, emissive);
     out[i++] = sizeof(LightEntry);
-    out[i++] = PROBE_OFFSET(LightEntry, cdf_hi);
+    out[i++] = PROBE_OFFSET(light, cdf_hi);
     out[i++] = sizeof(Frame);
-    out[i++] = PROBE_OFFSET(Frame, width);
-    out[i++] = PROBE_OFFSET(Frame, top_left);
-    out[i++] = PROBE_OFFSET(Frame, height);
-    out[i++] = PROBE_OFFSET(Frame, du);
-    out[i++] = PROBE_OFFSET(Frame, depth);
-    out[i++] = PROBE_OFFSET(Frame, dv);
-    out[i++] = PROBE_OFFSET(Frame, num_lights);
+    out[i++] = PROBE_OFFSET(frame, width);
+    out[i++] = PROBE_OFFSET(frame, top_left);
+    out[i++] = PROBE_OFFSET(frame, height);
+    out[i++] = PROBE_OFFSET(frame, du);
+    out[i++] = PROBE_OFFSET(frame, depth);
+    out[i++] = PROBE_OFFSET(frame, dv);
+    out[i++] = PROBE_OFFSET(frame, num_lights);
     out[i++] = sizeof(ChainValue);
-    out[i++] = PROBE_OFFSET(ChainValue, meta);
-    out[i++] = PROBE_OFFSET(ChainValue, stay);
+    out[i++] = PROBE_OFFSET(value, meta);
+    out[i++] = PROBE_OFFSET(value, stay);
     out[i++] = sizeof(TargetCells);
-    out[i++] = PROBE_OFFSET(TargetCells, columns);
+    out[i++] = PROBE_OFFSET(cells, columns);
     out[i++] = sizeof(BurnInFilm);
-    out[i++] = PROBE_OFFSET(BurnInFilm, seed_hi);
-    out[i++] = PROBE_OFFSET(BurnInFilm, offset);
-    out[i++] = PROBE_OFFSET(BurnInFilm, step);
-    out[i++] = PROBE_OFFSET(BurnInFilm, per_round);
+    out[i++] = PROBE_OFFSET(film, seed_hi);
+    out[i++] = PROBE_OFFSET(film, offset);
+    out[i++] = PROBE_OFFSET(film, step);
+    out[i++] = PROBE_OFFSET(film, per_round);
 }
 
 /* Closest hit of each ray (origin xyz, tmax in o; direction in d):
@@ -59,4 +71,35 @@ __kernel void probe_closest(__global const Triangle* tris, __global const BvhNod
     Hit h;
     bool found = bvh_trace(nodes, tris, &r, &h, false);
     out[i] = found ? (uint2)(h.tri, as_uint(h.t)) : (uint2)(0xFFFFFFFFu, 0u);
+}
+
+/* Adds n ones read from `ones` (64 of them) in one loop of n iterations:
+ * n, unless the compiler ends loops after a count of iterations
+ * (DeviceInfo::loop_iteration_limit). The loads keep the loop from being
+ * folded away. Work-item 0 writes *out. */
+__kernel void probe_loop_count(__global const uint* ones, const uint n, __global uint* out) {
+    uint r = 0u;
+    for (uint a = 0u; a < n; ++a)
+        r += ones[a & 63u];
+    if (get_global_id(0) == 0u) *out = r;
+}
+
+/* Reads scalar, 64-bit and struct arguments where work-items diverge: in a
+ * branch some take, in a loop whose trip count differs per work-item, and
+ * after some have returned (Mesa's llvmpipe warns that it treats such reads
+ * as uniform; an argument's offset is a constant, so they are). Work-item
+ * i writes out[i] = what it read, or ~0u where it returned first. */
+__kernel void probe_divergent_args(__global uint* out, const uint a, const ulong b, const Frame f,
+                                   const TargetCells c) {
+    uint i = get_global_id(0);
+    if (i % 7u == 3u) {
+        out[i] = ~0u;
+        return;
+    }
+    uint r = 0u;
+    if (i % 3u == 1u) r += a + f.depth;
+    for (uint k = 0u; k < i % 5u; ++k)
+        r += (uint)(b >> 32) + c.columns + f.width;
+    if (i & 1u) r ^= (uint)b + c.shift + f.num_lights;
+    out[i] = r;
 }

@@ -30,9 +30,9 @@ broken=0
 total=0
 start_all=$(date +%s)
 
-# run_one NAME FILE FROM TO FIRST WHAT
+# run_one NAME FILE FROM TO FIRST WHAT ENV
 run_one() {
-    name=$1 file=$2 from=$3 to=$4 first=$5 what=$6
+    name=$1 file=$2 from=$3 to=$4 first=$5 what=$6 menv=$7
     total=$((total + 1))
     t0=$(date +%s)
     cp "$ROOT/$file" "$file"
@@ -54,7 +54,7 @@ run_one() {
     log=$OUT/$name.log
     result=survived
     # stdin from /dev/null: mpirun (test_mpi.cpp) would read the entry list.
-    build/smallmlt_tests --gtest_filter="$first" >"$log" 2>&1 </dev/null || result=killed
+    env $menv build/smallmlt_tests --gtest_filter="$first" >"$log" 2>&1 </dev/null || result=killed
     if [ "$result" = survived ]; then
         SMALLMLT_BIN=build/smallmlt sh test/run_all.sh build/smallmlt_tests >>"$log" 2>&1 </dev/null ||
             result=killed
@@ -69,7 +69,8 @@ run_one() {
 }
 
 # Entries of test/mutants.txt: blocks of "key: value" lines (name, what,
-# file, from, to, first), separated by blank lines; # starts a comment.
+# file, from, to, first, env: variables for the run of `first`, such as the
+# device), separated by blank lines; # starts a comment.
 wanted() {
     [ $# -eq 0 ] && return 0
     for w in "$@"; do [ "$w" = "$name" ] && return 0; done
@@ -77,12 +78,12 @@ wanted() {
 }
 flush() {
     if [ -n "$name" ] && wanted $selected; then
-        run_one "$name" "$file" "$from" "$to" "${first:-*}" "${what:-$name}"
+        run_one "$name" "$file" "$from" "$to" "${first:-*}" "${what:-$name}" "$menv"
     fi
-    name= file= from= to= first= what=
+    name= file= from= to= first= what= menv=
 }
 selected="$*"
-name= file= from= to= first= what=
+name= file= from= to= first= what= menv=
 while IFS= read -r line || [ -n "$line" ]; do
     case $line in
     '#'*) continue ;;
@@ -93,6 +94,7 @@ while IFS= read -r line || [ -n "$line" ]; do
     from:*) from=${line#from: } ;;
     to:*) to=${line#to: } ;;
     first:*) first=${line#first: } ;;
+    env:*) menv=${line#env: } ;;
     esac
 done <"$LIST"
 flush

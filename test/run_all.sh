@@ -8,6 +8,11 @@
 # two shards took 3 min 6 s against 3 min 57 s for one). The first shard's
 # output is shown as it runs, the others' and each shell test's after, from
 # their logs.
+# Beside them runs the rusticl subset: RUSTICL_TESTS (a GoogleTest
+# filter) on Mesa's OpenCL (llvmpipe), the compiler of Linux's small GPUs;
+# where Mesa's OpenCL has no device here, it is skipped and says why.
+# RUSTICL_TESTS=none leaves it out (`make test-rusticl` runs everything
+# there instead).
 # Usage: run_all.sh TEST_BINARY  (with SMALLMLT_BIN naming the smallmlt binary)
 set -u
 TEST_BIN=$1
@@ -15,7 +20,29 @@ BIN=${SMALLMLT_BIN:-build/smallmlt}
 export SMALLMLT_BIN=$BIN
 SCRATCH=build/test-scratch
 mkdir -p "$SCRATCH"
-rm -f "$SCRATCH"/gtest-*.rc "$SCRATCH"/gtest-*.log
+rm -f "$SCRATCH"/gtest-*.rc "$SCRATCH"/gtest-*.log "$SCRATCH"/rusticl.*
+# The layout probe, the loop limit and argument reads, furnaces, the
+# sampling chi-square tests, a chain-target test, a block-wise render test,
+# determinism, the film's overflow bound and the split's closed forms.
+RUSTICL_TESTS=${RUSTICL_TESTS-SharedLayout.*:OpenCl.*:Depths/Furnace.*:DiffuseSampling.*:\
+LightSampling.*:DielectricSampling.*:LightPick.*:SmallStep.IntegerDelta*:SobolSampler.Every*:\
+SobolSampler.Pairs*:SobolSampler.ImageIsPathTracingsImagePerBlock:\
+Proposals/ChainTarget.StatesFollowTheClosedFormMarginals/0:MltDeterminism.*:\
+Render.SameSeed*:Render.ManySamplesAtOnceEqualOneByOne:FilmOverflow.*:\
+Split.FurnacePartsAreTheClosedForm}
+RUSTICL_ICD=/etc/OpenCL/vendors/rusticl.icd
+rusticl() { OCL_ICD_VENDORS=$RUSTICL_ICD RUSTICL_ENABLE=swrast "$@"; }
+if [ "$RUSTICL_TESTS" != none ]; then
+    if ! rusticl "$BIN" devices 2>/dev/null | grep -q 'llvmpipe.*(rusticl)'; then
+        echo "no llvmpipe device on Mesa's OpenCL ($RUSTICL_ICD; mesa-opencl-icd, make deps)" \
+            > "$SCRATCH/rusticl.skip"
+    else
+        {
+            rusticl "$TEST_BIN" --gtest_filter="$RUSTICL_TESTS" > "$SCRATCH/rusticl.log" 2>&1
+            echo $? > "$SCRATCH/rusticl.rc"
+        } &
+    fi
+fi
 (
     for t in test/*_test.sh; do
         name=$(basename "$t" _test.sh)
@@ -37,18 +64,32 @@ done
 wait
 g_pass=0
 g_fail=0
+g_skip=0
 shard_failed=0
-for k in $(seq 0 $((SHARDS - 1))); do
-    [ "$k" -gt 0 ] && cat "$SCRATCH/gtest-$k.log"
-    [ "$(cat "$SCRATCH/gtest-$k.rc")" = 0 ] || shard_failed=1
-    log=$SCRATCH/gtest-$k.log
-    p=$(sed -n 's/^\[  PASSED  \] \([0-9]*\) test.*/\1/p' "$log" | tail -n 1)
-    f=$(sed -n 's/^\[  FAILED  \] \([0-9]*\) test.*/\1/p' "$log" | tail -n 1)
+# count_gtest LOG RC_FILE: adds a GoogleTest run's counts.
+count_gtest() {
+    [ "$(cat "$2")" = 0 ] || shard_failed=1
+    p=$(sed -n 's/^\[  PASSED  \] \([0-9]*\) test.*/\1/p' "$1" | tail -n 1)
+    f=$(sed -n 's/^\[  FAILED  \] \([0-9]*\) test.*/\1/p' "$1" | tail -n 1)
+    k=$(sed -n 's/^\[  SKIPPED \] \([0-9]*\) test.*/\1/p' "$1" | tail -n 1)
     g_pass=$((g_pass + ${p:-0}))
     g_fail=$((g_fail + ${f:-0}))
-    # A crashed shard reports no counts: count it as a failure.
+    g_skip=$((g_skip + ${k:-0}))
+    # A crashed run reports no counts: count it as a failure.
     [ -z "$p$f" ] && g_fail=$((g_fail + 1))
+}
+for k in $(seq 0 $((SHARDS - 1))); do
+    [ "$k" -gt 0 ] && cat "$SCRATCH/gtest-$k.log"
+    count_gtest "$SCRATCH/gtest-$k.log" "$SCRATCH/gtest-$k.rc"
 done
+if [ -f "$SCRATCH/rusticl.skip" ]; then
+    echo "rusticl subset: skipped: $(cat "$SCRATCH/rusticl.skip")"
+    g_skip=$((g_skip + 1))
+elif [ -f "$SCRATCH/rusticl.rc" ]; then
+    echo "== the rusticl subset, on Mesa's OpenCL (llvmpipe)"
+    cat "$SCRATCH/rusticl.log"
+    count_gtest "$SCRATCH/rusticl.log" "$SCRATCH/rusticl.rc"
+fi
 s_pass=0
 s_fail=0
 for t in test/*_test.sh; do
@@ -64,5 +105,5 @@ passed=$((g_pass + s_pass))
 failed=$((g_fail + s_fail))
 # A shard that exits non-zero without counting a failure still fails.
 if [ "$shard_failed" -ne 0 ] && [ "$g_fail" -eq 0 ]; then failed=$((failed + 1)); fi
-echo "all: $passed passed, $failed failed"
+echo "all: $passed passed, $failed failed, $g_skip skipped"
 [ "$failed" -eq 0 ]

@@ -144,6 +144,7 @@ TEST(FilmRounding, DimChannelsAreNotBiased) {
 // are independent), is within 4 of its standard deviations (a bias of 1/32
 // unit in the 3% of adds that carry large stay weights fails it).
 TEST(FilmAtomics, ThirtyTwoBitFilmEqualsSixtyFourWithinRounding) {
+    SKIP_WITHOUT_INT64_ATOMICS();
     DeviceScene ds = prepare_scene(test::scene("cornell", 32, 32));
     Image img[2];
     MltStats st[2];

@@ -8,6 +8,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
+#include <thread>
+
 using namespace smallmlt;
 
 namespace {
@@ -113,6 +117,23 @@ TEST(ThreadCount, FollowsTheDeviceMemory) {
         EXPECT_LE(c.plan.largest(), budget.max_alloc_bytes) << mib << " MiB";
     }
     EXPECT_LT(previous, busy_threads(dev)) << "16 MiB should force fewer threads";
+}
+
+// A CPU device runs on this machine's hardware threads: reporting more
+// compute units than that (Mesa's llvmpipe reports 8 on 2 cores) gives no
+// more threads; a GPU's count follows its compute units.
+TEST(ThreadCount, CpuDeviceCountsThisMachinesCores) {
+    DeviceInfo d;
+    d.cpu = true;
+    d.max_work_group = 1024;
+    const std::uint32_t hw = std::max(1u, std::thread::hardware_concurrency());
+    d.compute_units = hw;
+    const std::uint32_t own = busy_threads(d);
+    EXPECT_EQ(own, std::uint32_t(1) << std::uint32_t(std::ceil(std::log2(hw * kCpuThreadsPerCore))));
+    d.compute_units = 4 * hw;
+    EXPECT_EQ(busy_threads(d), own);
+    d.cpu = false;
+    EXPECT_GT(busy_threads(d), own);
 }
 
 // Total memory to spare, but a single-buffer limit below the state buffer:

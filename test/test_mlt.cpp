@@ -317,6 +317,7 @@ TEST(MltDeterminism, SameSeedSameImage) {
 // are added to the film for the read and taken out again (mlt_owed). Both
 // renders use the 64-bit reference film, whose rounding is 2^-24.
 TEST(MltStaySplat, GatheredStaysEqualEagerSplatsWithinRounding) {
+    SKIP_WITHOUT_INT64_ATOMICS();
     struct Case {
         const char* name;
         std::uint32_t proposals, min_run; // min_run: a run that must flush

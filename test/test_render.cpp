@@ -39,6 +39,20 @@ TEST(Render, SameSeedSameImageWhateverThePassSplit) {
     EXPECT_NE(other.rgb, a.rgb);
 }
 
+// A pixel's samples asked for at once or one by one: the same image, bit for
+// bit. In one launch, 64 samples of ajar take a work-item past the 65,535
+// loop iterations after which Mesa's llvmpipe ends every loop (its BVH
+// traversals stop short and the image loses half its light), so there the
+// path tracer must launch sample by sample (DeviceInfo::loop_iteration_limit).
+TEST(Render, ManySamplesAtOnceEqualOneByOne) {
+    DeviceScene ds = prepare_scene(test::scene("ajar", 32, 32));
+    Image at_once = test::render_pt(ds, 5, 64);
+    PathTracer one_by_one(test::cl(), ds, 5);
+    for (int k = 0; k < 64; ++k)
+        one_by_one.add_samples(1);
+    EXPECT_EQ(at_once.rgb, one_by_one.image().rgb);
+}
+
 // Two independent renders A, B at n spp: E[(A - B)^2] / 2 is the per-pixel
 // variance. Returns its log-log slope over n = 2..32, averaged over the whole
 // film and over its lower half (the directly seen light's edge pixels, a few

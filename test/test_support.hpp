@@ -24,6 +24,13 @@ inline const ClContext& cl() {
     return ctx;
 }
 
+// Skips the calling test, saying why, on a device without 64-bit atomics:
+// the 64-bit reference film (--film-atomics 64) needs them.
+#define SKIP_WITHOUT_INT64_ATOMICS()                                                               \
+    if (!::smallmlt::test::cl().device().int64_atomics)                                            \
+    GTEST_SKIP() << ::smallmlt::test::cl().device().name                                           \
+                 << " lacks cl_khr_int64_base_atomics, which the 64-bit reference film needs"
+
 // A scene from scenes/ (tests run from the repository root).
 inline Scene scene(const std::string& name, int width, int height, int depth = -1) {
     Scene s = load_scene("scenes/" + name + ".scene");

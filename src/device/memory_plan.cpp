@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdio>
 #include <functional>
+#include <thread>
 
 namespace smallmlt {
 
@@ -209,7 +210,11 @@ void require_work_group(const DeviceInfo& dev) {
 std::uint32_t busy_threads(const DeviceInfo& dev) {
     std::uint64_t per_unit = dev.cpu ? kCpuThreadsPerCore
                                      : std::max<std::uint64_t>(dev.max_work_group, 1) * 8;
-    std::uint64_t want = std::uint64_t(std::max(1u, dev.compute_units)) * per_unit;
+    std::uint32_t units = std::max(1u, dev.compute_units);
+    // A CPU device runs on this machine's cores, however many compute units
+    // it reports (Mesa's llvmpipe reports 8 on 2 cores).
+    if (dev.cpu) units = std::min(units, std::max(1u, std::thread::hardware_concurrency()));
+    std::uint64_t want = std::uint64_t(units) * per_unit;
     std::uint32_t n = 1u << 10;
     while (n < want && n < (1u << 20))
         n <<= 1;

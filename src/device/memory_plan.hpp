@@ -98,7 +98,8 @@ std::uint64_t smallest_device_memory(const std::function<MemoryPlan(std::uint64_
 void require_work_group(const DeviceInfo& dev);
 
 // Threads that keep the device busy: on a GPU, 8 work-groups of the largest
-// size per compute unit; on a CPU, kCpuThreadsPerCore per core (its
+// size per compute unit; on a CPU, kCpuThreadsPerCore per core, the
+// fewer of its compute units and this machine's hardware threads (its
 // throughput is flat in N, doc/RESULTS.md, and fewer chains run longer);
 // rounded up to a power of two, within [2^10, 2^20].
 constexpr std::uint64_t kCpuThreadsPerCore = 8192;

@@ -110,6 +110,11 @@ template <typename T> T device_value(cl_device_id d, cl_device_info what) {
 
 } // namespace
 
+std::uint32_t cl_loop_iteration_limit(const std::string& device_name) {
+    // gallivm's LP_MAX_TGSI_LOOP_ITERATIONS, one counter per invocation.
+    return device_name.rfind("llvmpipe", 0) == 0 ? 65535u : 0u;
+}
+
 std::vector<DeviceInfo> cl_list_devices() {
     cl_uint np = 0;
     cl_int err = clGetPlatformIDs(0, nullptr, &np);
@@ -144,6 +149,7 @@ std::vector<DeviceInfo> cl_list_devices() {
             info.compute_units = device_value<cl_uint>(d, CL_DEVICE_MAX_COMPUTE_UNITS);
             info.max_work_group = device_value<std::size_t>(d, CL_DEVICE_MAX_WORK_GROUP_SIZE);
             info.cpu = device_value<cl_device_type>(d, CL_DEVICE_TYPE) & CL_DEVICE_TYPE_CPU;
+            info.loop_iteration_limit = cl_loop_iteration_limit(info.name);
             std::string ext = device_string(d, CL_DEVICE_EXTENSIONS);
             info.int64_atomics = ext.find("cl_khr_int64_base_atomics") != std::string::npos;
             out.push_back(info);

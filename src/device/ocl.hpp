@@ -35,9 +35,17 @@ struct DeviceInfo {
     std::uint32_t compute_units = 0;
     std::size_t max_work_group = 0;
     bool int64_atomics = false;
-    bool cpu = false;      // CL_DEVICE_TYPE_CPU: its compute units are cores
+    bool cpu = false; // CL_DEVICE_TYPE_CPU: its compute units are cores
+    // Loop iterations (back edges of all loops together) after which the
+    // compiler ends every loop of a work-item early, 0: none. Mesa's llvmpipe
+    // (gallivm) stops each invocation at 65,535, so on it a launch must be
+    // one path per work-item (cl_loop_iteration_limit).
+    std::uint32_t loop_iteration_limit = 0;
     bool emulated = false; // limited by --profile or --device-mem (src/device_profile.hpp)
 };
+
+// The loop limit of a device by its name (DeviceInfo::loop_iteration_limit).
+std::uint32_t cl_loop_iteration_limit(const std::string& device_name);
 
 // Every device of every platform, in a stable order (the --device index).
 std::vector<DeviceInfo> cl_list_devices();

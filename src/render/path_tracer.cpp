@@ -55,7 +55,16 @@ PathTracer::PathTracer(const ClContext& cl, const DeviceScene& ds, std::uint64_t
 }
 
 void PathTracer::add_samples(std::uint32_t n) {
-    if (n == 0) return;
+    // A device that ends loops after a count per work-item
+    // (DeviceInfo::loop_iteration_limit) gets one sample per launch: a path
+    // stays well within the count, a pixel's many samples would not. The
+    // image is the same: each pixel adds its samples in the same order.
+    const std::uint32_t per_launch = cl_.device().loop_iteration_limit ? 1u : n;
+    for (std::uint32_t done = 0; done < n; done += per_launch)
+        launch(std::min(per_launch, n - done));
+}
+
+void PathTracer::launch(std::uint32_t n) {
     cl_ulong seed = seed_;
     cl_uint first_sample = spp_, count = n;
     const bool scratch = !host_.empty();

@@ -82,6 +82,8 @@ class PathTracer : public Integrator {
     std::uint64_t band_pixels_;
     std::uint32_t sample_offset_, sample_stride_;
     std::vector<double> host_; // the OMC part's film (else empty: the film is bands_)
+    // One kernel launch of n samples per pixel.
+    void launch(std::uint32_t n);
     // Sums of the rows of stats.
     std::uint64_t stat(int which) const;
 };
