@@ -12,6 +12,11 @@ ifeq ($(SAN),1)
 CXXFLAGS += -O1 -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=undefined
 LDFLAGS  += -fsanitize=address,undefined
 export LSAN_OPTIONS := suppressions=$(CURDIR)/test/lsan.supp print_suppressions=0
+# Once Mesa's OpenCL is installed, the ICD loader opens it in every process,
+# and it opens and closes llvmpipe's pipe driver, whose allocations
+# LeakSanitizer can then name by no module: the tests on PoCL see PoCL's
+# ICD alone (the rusticl runs name their own, whose modules stay loaded).
+export OCL_ICD_VENDORS := /etc/OpenCL/vendors/pocl.icd
 endif
 
 DEB_PACKAGES := g++ make pocl-opencl-icd mesa-opencl-icd ocl-icd-opencl-dev opencl-headers \

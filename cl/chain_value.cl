@@ -30,13 +30,16 @@ inline ChainValue chain_moved(ChainValue x, float3 f, uint bounces) {
 }
 
 /* The value of chain x after it stayed where it is: its run of rejections
- * grows by one (saturating); reaching stuck_run sets the stuck mark. */
+ * grows by one (saturating); reaching stuck_run sets the stuck mark. It
+ * writes a copy, never x itself: Mesa's compiler (rusticl) passes a struct
+ * parameter by reference, so a write to x would change the caller's. */
 inline ChainValue chain_stayed(ChainValue x, uint stuck_run) {
     uint run = min(chain_run(x) + 1u, CHAIN_RUN_MAX);
     uint meta = (x.meta & (CHAIN_BOUNCES_MASK | CHAIN_STUCK_BIT)) | (run << CHAIN_RUN_SHIFT);
     if (run >= stuck_run) meta |= CHAIN_STUCK_BIT;
-    x.meta = meta;
-    return x;
+    ChainValue v = x;
+    v.meta = meta;
+    return v;
 }
 
 /* A stay weight in [0, 64] in the fixed point of ChainValue.stay, and back. */

@@ -23,13 +23,14 @@ mkdir -p "$SCRATCH"
 rm -f "$SCRATCH"/gtest-*.rc "$SCRATCH"/gtest-*.log "$SCRATCH"/rusticl.*
 # The layout probe, the loop limit and argument reads, furnaces, the
 # sampling chi-square tests, a chain-target test, a block-wise render test,
-# determinism, the film's overflow bound and the split's closed forms.
+# determinism, the film's overflow bound, the split's closed forms and the
+# stuck count.
 RUSTICL_TESTS=${RUSTICL_TESTS-SharedLayout.*:OpenCl.*:Depths/Furnace.*:DiffuseSampling.*:\
 LightSampling.*:DielectricSampling.*:LightPick.*:SmallStep.IntegerDelta*:SobolSampler.Every*:\
 SobolSampler.Pairs*:SobolSampler.ImageIsPathTracingsImagePerBlock:\
 Proposals/ChainTarget.StatesFollowTheClosedFormMarginals/0:MltDeterminism.*:\
 Render.SameSeed*:Render.ManySamplesAtOnceEqualOneByOne:FilmOverflow.*:\
-Split.FurnacePartsAreTheClosedForm}
+Split.FurnacePartsAreTheClosedForm:StuckChains.EveryChainThatBecameStuckIsCountedOnce}
 RUSTICL_ICD=/etc/OpenCL/vendors/rusticl.icd
 rusticl() { OCL_ICD_VENDORS=$RUSTICL_ICD RUSTICL_ENABLE=swrast "$@"; }
 if [ "$RUSTICL_TESTS" != none ]; then

@@ -126,6 +126,31 @@ TEST(StuckChains, AreCountedWhereABrightCausticHoldsThem) {
     }
 }
 
+// The same count on a render small enough for every device: the chains
+// that became stuck are counted once each, as their marks say. On Mesa's
+// OpenCL, a function that changed its by-value ChainValue changed the
+// caller's, so a chain that became stuck looked stuck before the step and
+// none was counted (cl/chain_value.cl, chain_stayed).
+TEST(StuckChains, EveryChainThatBecameStuckIsCountedOnce) {
+    DeviceScene ds = prepare_scene(test::scene("tiny-caustic", 16, 16));
+    MltOptions opt;
+    opt.threads = 256;
+    opt.large_step = 0.1f;
+    opt.seed = 5;
+    opt.stuck_run = 20;
+    MltRenderer mlt(test::cl(), ds, opt);
+    mlt.prepare();
+    mlt.step(300);
+    std::uint64_t marked = 0;
+    for (const ChainValue& v : chain_values(mlt))
+        marked += (v.meta & CHAIN_STUCK_BIT) != 0;
+    std::printf("%llu chains marked stuck, %llu counted, longest run %u\n",
+                static_cast<unsigned long long>(marked),
+                static_cast<unsigned long long>(mlt.stats().stuck), mlt.stats().longest_run);
+    EXPECT_GT(marked, 0u) << "no chain stayed 20 steps: the test needs one";
+    EXPECT_EQ(mlt.stats().stuck, marked);
+}
+
 // Item 5. ajar without burn-in: most chains start on black paths (the light
 // comes through a slit). A chain at I(x) = 0 accepts whatever it proposes,
 // so after one step every one of them has moved (its packed state changed:

@@ -58,7 +58,8 @@ void PathTracer::add_samples(std::uint32_t n) {
     // A device that ends loops after a count per work-item
     // (DeviceInfo::loop_iteration_limit) gets one sample per launch: a path
     // stays well within the count, a pixel's many samples would not. The
-    // image is the same: each pixel adds its samples in the same order.
+    // film is the same, bit for bit: a pixel adds its samples in the same
+    // order (the OMC part's host sums, added per launch, round otherwise).
     const std::uint32_t per_launch = cl_.device().loop_iteration_limit ? 1u : n;
     for (std::uint32_t done = 0; done < n; done += per_launch)
         launch(std::min(per_launch, n - done));
