@@ -13,6 +13,13 @@ RESULTS=${RESULTS:-bench/results}
 OUT=$RESULTS/film_atomics
 mkdir -p "$OUT"
 echo "size,scene,mutations_per_s_64,mutations_per_s_32,ratio_32_over_64,atomics_per_mutation_64,atomics_per_mutation_32" > "$OUT/summary.csv"
+# The 64-bit film needs 64-bit atomics (device 0's third line of `devices`).
+rm -f "$OUT/skipped"
+if ! "$BIN" devices | sed -n 3p | grep -q "64-bit atomics"; then
+    echo "skipped: device 0 lacks cl_khr_int64_base_atomics, which the 64-bit film needs" |
+        tee "$OUT/skipped"
+    exit 0
+fi
 for size in $SIZES; do
     RESULTS=$OUT/size$size SIZE=$size FLAGS_A="--split none --film-atomics 64" \
         FLAGS_B="--split none --film-atomics 32" \

@@ -23,12 +23,15 @@ failed_in_time() { [ "$rc" -ne 0 ] && [ "$rc" -ne 124 ]; }
 one_value() { [ -n "$1" ] && [ "$(echo "$1" | tr ' ' '\n' | sort -u | wc -l)" -eq 1 ]; }
 
 truth built [ -x "$MPI_BIN" ]
-# Rank 1 finds no device: both ranks exit non-zero, naming rank and host.
+# Rank 1 finds no OpenCL platform (an empty vendors folder, on any ICD):
+# both ranks exit non-zero, naming rank and host.
+mkdir -p "$DIR/no-vendors"
 out=$($MPIRUN -np 1 "$MPI_BIN" render $SMALL --spp 1 --out "$DIR/fail.pfm" : \
-    -np 1 env POCL_DEVICES=none "$MPI_BIN" render $SMALL --spp 1 --out "$DIR/fail.pfm" 2>&1)
+    -np 1 env OCL_ICD_VENDORS="$DIR/no-vendors" "$MPI_BIN" render $SMALL --spp 1 \
+    --out "$DIR/fail.pfm" 2>&1)
 rc=$?
 truth rank_failure_exit failed_in_time
-truth rank_failure_names_rank says "rank 1 on $(hostname).*: no OpenCL device found"
+truth rank_failure_names_rank says "rank 1 on $(hostname).*: no OpenCL platform found"
 truth rank_failure_stops_others says "rank 0 on $(hostname).*: stopped, as another rank failed to start"
 absent rank_failure_no_file "$DIR/fail.pfm"
 check bad_flag 2 "unknown option --fast" -- $MPIRUN -np 2 "$MPI_BIN" render scenes/cornell.scene --fast
