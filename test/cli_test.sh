@@ -53,7 +53,10 @@ grep -v lamp "$DIR/dark.obj" > "$DIR/unlit.obj"
 sed 's/dark.obj/unlit.obj/' "$DIR/dark.scene" > "$DIR/unlit.scene"
 check no_light 1 "unlit.scene: no emissive triangle" -- "$BIN" render "$DIR/unlit.scene" --out "$DIR/unlit.png"
 absent no_light_no_file "$DIR/unlit.png"
-check film_enormous 1 "not enough device memory" -- "$BIN" render scenes/cornell.scene --width 16384 --height 16384 --out "$DIR/huge.png"
+# On a device of 4 GiB: what PoCL reports is a share of the memory free at
+# the time (up to 22 GiB here, which this film fits, and the host then ran
+# out of memory).
+check film_enormous 1 "not enough device memory" -- "$BIN" render scenes/cornell.scene --width 16384 --height 16384 --device-mem 4G --out "$DIR/huge.png"
 absent film_enormous_no_file "$DIR/huge.png"
 check device_mem_tiny 1 "not enough device memory" -- "$BIN" render scenes/cornell-water.scene --device-mem 64K --out "$DIR/tiny.png"
 absent device_mem_tiny_no_file "$DIR/tiny.png"

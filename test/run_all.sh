@@ -72,10 +72,10 @@ count_gtest() {
     [ "$(cat "$2")" = 0 ] || shard_failed=1
     p=$(sed -n 's/^\[  PASSED  \] \([0-9]*\) test.*/\1/p' "$1" | tail -n 1)
     f=$(sed -n 's/^\[  FAILED  \] \([0-9]*\) test.*/\1/p' "$1" | tail -n 1)
-    k=$(sed -n 's/^\[  SKIPPED \] \([0-9]*\) test.*/\1/p' "$1" | tail -n 1)
+    sk=$(sed -n 's/^\[  SKIPPED \] \([0-9]*\) test.*/\1/p' "$1" | tail -n 1)
     g_pass=$((g_pass + ${p:-0}))
     g_fail=$((g_fail + ${f:-0}))
-    g_skip=$((g_skip + ${k:-0}))
+    g_skip=$((g_skip + ${sk:-0}))
     # A crashed run reports no counts: count it as a failure.
     [ -z "$p$f" ] && g_fail=$((g_fail + 1))
 }
