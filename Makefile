@@ -6,7 +6,7 @@ CXX      ?= g++
 SAN      ?= 0
 JOBS     ?= $(shell nproc)
 BUILD    := $(if $(filter 1,$(SAN)),build-san,build)
-CXXFLAGS := -std=c++17 -O2 -g -Wall -Wextra -Werror -Isrc -Icl -MMD -MP
+CXXFLAGS := -std=c++17 -O2 -g -Wall -Wextra -Werror -Isrc -Icl/core -MMD -MP
 LDLIBS   := -lOpenCL -ltinyobjloader -ltinyexr -lstb -lpthread
 ifeq ($(SAN),1)
 CXXFLAGS += -O1 -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=undefined
@@ -32,13 +32,15 @@ FUZZ_SECONDS  ?= 60
 FUZZ_SRC      := $(addprefix src/scene/,scene.cpp obj_loader.cpp mtl_loader.cpp text_parse.cpp \
                    bvh.cpp device_scene.cpp sample_layout.cpp)
 
-CL_FILES   := $(sort $(wildcard cl/*.h cl/*.cl))
+# Kernel files: the product's (cl/, by stage) and the test binary's probes.
+CL_FILES   := $(sort $(wildcard cl/*/*.h cl/*/*.cl))
+TEST_CL    := $(sort $(wildcard test/cl/*.cl))
 LIB_SRC    := $(filter-out src/app/main.cpp src/mpi/%,$(wildcard src/*/*.cpp))
 MPI_SRC    := $(wildcard src/mpi/*.cpp)
 MPI_OBJ    := $(MPI_SRC:src/%.cpp=$(BUILD)/obj/%.o)
 LIB_OBJ    := $(LIB_SRC:src/%.cpp=$(BUILD)/obj/%.o) $(BUILD)/obj/gen/kernel_sources.o
 TEST_SRC   := $(wildcard test/*.cpp)
-TEST_OBJ   := $(TEST_SRC:test/%.cpp=$(BUILD)/obj/test/%.o)
+TEST_OBJ   := $(TEST_SRC:test/%.cpp=$(BUILD)/obj/test/%.o) $(BUILD)/obj/gen/test_kernel_sources.o
 BIN        := $(BUILD)/smallmlt
 TEST_BIN   := $(BUILD)/smallmlt_tests
 # Test code is mostly calls into the library and the device: compiled
@@ -64,9 +66,13 @@ deps deps-fuzz:
 
 $(BUILD)/gen/kernel_sources.cpp: $(CL_FILES) src/device/embed_kernels.sh
 	@mkdir -p $(dir $@)
-	sh src/device/embed_kernels.sh $(CL_FILES) > $@.tmp && mv $@.tmp $@
+	sh src/device/embed_kernels.sh kProductKernelFiles $(CL_FILES) > $@.tmp && mv $@.tmp $@
 
-$(BUILD)/obj/gen/kernel_sources.o: $(BUILD)/gen/kernel_sources.cpp
+$(BUILD)/gen/test_kernel_sources.cpp: $(TEST_CL) src/device/embed_kernels.sh
+	@mkdir -p $(dir $@)
+	sh src/device/embed_kernels.sh kTestKernelFiles $(TEST_CL) > $@.tmp && mv $@.tmp $@
+
+$(BUILD)/obj/gen/%.o: $(BUILD)/gen/%.cpp
 	@mkdir -p $(dir $@)
 	$(CXX) $(CXXFLAGS) -c $< -o $@
 
@@ -127,7 +133,7 @@ mutants: deps
 # the seed corpus in test/fuzz/corpus; findings are written as crash-* files.
 build/fuzz/fuzz_scene: test/fuzz/fuzz_scene.cpp $(FUZZ_SRC)
 	@mkdir -p $(dir $@)
-	clang++ -std=c++17 -O1 -g -fsanitize=fuzzer,address,undefined -Isrc -Icl $^ -o $@ -ltinyobjloader
+	clang++ -std=c++17 -O1 -g -fsanitize=fuzzer,address,undefined -Isrc -Icl/core $^ -o $@ -ltinyobjloader
 
 fuzz: deps deps-fuzz
 	$(MAKE) build/fuzz/fuzz_scene
@@ -136,7 +142,7 @@ fuzz: deps deps-fuzz
 	cd build/fuzz && ./fuzz_scene -max_total_time=$(FUZZ_SECONDS) -max_len=65536 -print_final_stats=1 corpus
 
 format:
-	clang-format -i src/*/*.cpp src/*/*.hpp test/*.cpp test/*.hpp cl/*.cl cl/*.h
+	clang-format -i src/*/*.cpp src/*/*.hpp test/*.cpp test/*.hpp cl/*/*.cl cl/*/*.h test/cl/*.cl
 
 clean:
 	rm -rf build build-san

@@ -24,7 +24,7 @@ namespace {
 template <typename T> std::vector<T> device_scan(const std::vector<T>& in, const char* type) {
     const ClContext& cl = test::cl();
     ClProgram prog(
-        cl.build({"cl/scan.cl"}, scan_defines(cl.device()) + "#define SCAN_T " + type + "\n"));
+        cl.build({"cl/core/scan.cl"}, scan_defines(cl.device()) + "#define SCAN_T " + type + "\n"));
     DeviceScan scan(cl, prog.p, in.size(), sizeof(T));
     ClBuffer a(cl, CL_MEM_READ_ONLY, in.size() * sizeof(T), in.data());
     ClBuffer b(cl, CL_MEM_READ_WRITE, in.size() * sizeof(T));
@@ -76,7 +76,7 @@ TEST(Scan, FloatInputMatchesHostWithinRounding) {
 // also when the scan runs in place as the burn-in runs it.
 TEST(Scan, Ulong64BitInputMatchesHostExactlyInPlace) {
     const ClContext& cl = test::cl();
-    ClProgram prog(cl.build({"cl/scan.cl"}, scan_defines(cl.device())));
+    ClProgram prog(cl.build({"cl/core/scan.cl"}, scan_defines(cl.device())));
     std::mt19937_64 rng(2);
     for (std::size_t n : kSizes) {
         std::vector<cl_ulong> in(n);
@@ -100,7 +100,8 @@ namespace {
 // The burn-in's program: rng, the 64-bit scan and the picks.
 cl_program build_burnin() {
     const ClContext& cl = test::cl();
-    return cl.build({"cl/rng.cl", "cl/scan.cl", "cl/burnin.cl"}, scan_defines(cl.device()));
+    return cl.build({"cl/core/rng.cl", "cl/core/scan.cl", "cl/mlt/burnin.cl"},
+                    scan_defines(cl.device()));
 }
 
 // Picks `count` indices from luminances w as the burn-in's first round does
@@ -227,7 +228,7 @@ std::vector<float> million_samples() {
 } // namespace
 
 // Every sample's exact pick probability, from the weights' scan: u =
-// floor(r T / 2^64) for uniform 64-bit r (cl/burnin.cl), so sample i gets
+// floor(r T / 2^64) for uniform 64-bit r (cl/mlt/burnin.cl), so sample i gets
 // ceil(S_i 2^64 / T) - ceil(S_(i-1) 2^64 / T) of the 2^64 values of r. It is
 // its share of the luminance within a relative 1e-6 for every positive
 // sample (the smallest are 1e-12 of the total), and 0 for every zero one.
@@ -482,7 +483,7 @@ TEST(BurnIn, ChainsStartOnThePathsTheirPicksFound) {
     MltOptions opt;
     opt.threads = 1000;
     opt.burn_in_iters = 7;
-    opt.extra_files = {"cl/kernels_probe_mlt.cl"};
+    opt.extra_files = {"test/cl/probe_mlt.cl"};
     MltRenderer mlt(test::cl(), ds, opt);
     mlt.prepare();
     std::vector<ChainValue> v(opt.threads);

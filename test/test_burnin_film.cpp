@@ -1,4 +1,4 @@
-// Where the burn-in's samples lie on the film (cl/burnin_film.cl,
+// Where the burn-in's samples lie on the film (cl/sampling/burnin_film.cl,
 // src/render/burn_in.hpp): every pixel gets its share of them, give or take
 // one, at Sobol sample numbers below the OMC part's first; the device puts
 // each where the host expects; a pixel's samples are its Sobol sequence's
@@ -77,7 +77,7 @@ TEST(BurnInFilm, DeviceSamplesArePixelsSobolPoints) {
         DeviceScene ds = prepare_scene(test::scene("cornell", int(w), int(h)));
         MltOptions opt;
         opt.threads = 64;
-        opt.extra_files = {"cl/kernels_probe_mlt.cl"};
+        opt.extra_files = {"test/cl/probe_mlt.cl"};
         MltRenderer mlt(test::cl(), ds, opt);
         const std::uint32_t pixels = w * h, n = 40 * pixels;
         BurnInFilm f = burn_in_film(21, 22, pixels, 37);

@@ -1,4 +1,4 @@
-// The MLT sampler against a known target with bounces (cl/eval_target.cl on
+// The MLT sampler against a known target with bounces (test/cl/eval_target.cl on
 // a layout with two 24-bit and two 16-bit slots a bounce, depth 4): the
 // chains' states follow the target's closed-form marginals, live and dead
 // bounces included, and the splatted image follows its per-pixel integral.
@@ -22,7 +22,7 @@ using namespace smallmlt;
 
 namespace {
 
-const char* kProbeFile = "cl/kernels_probe_mlt.cl";
+const char* kProbeFile = "test/cl/probe_mlt.cl";
 
 // Diffuse and dielectric, no light, depth 4: each bounce has BSDF_U, BSDF_V
 // (24 bits), FRESNEL and RR (16 bits), 80 bits; slots straddle words.
@@ -54,7 +54,7 @@ double sin2_sum(double j0, double j1, double n) {
     return count / 2 - cos_sum / 2;
 }
 
-// The target of cl/eval_target.cl on the layout of target_features(), and
+// The target of test/cl/eval_target.cl on the layout of target_features(), and
 // its marginals under pi(u) = F(u) / sum F on the grid (film numbers on the
 // 2^-24 grid, each bounce slot on its own). All weights are "per unit
 // volume": sums over grid points divided by the number of grid points.
@@ -257,7 +257,7 @@ double env_or(const char* name, double fallback) {
 
 // ---------------------------------------------------------------------------
 // The closed forms against brute-force sums over every grid point, with the
-// per-number functions written as cl/eval_target.cl computes them (float).
+// per-number functions written as test/cl/eval_target.cl computes them (float).
 
 float host_stripes(float v, float n, float odd, float even) {
     return (std::uint32_t(v * n) & 1u) ? odd : even;
@@ -341,7 +341,7 @@ TEST(ChainTargetLazy, CommitStoresExactlyTheNumbersRead) {
     MltOptions opt;
     opt.threads = 4096;
     opt.seed = 3;
-    opt.evaluator = "cl/eval_target.cl";
+    opt.evaluator = "test/cl/eval_target.cl";
     opt.extra_files = {kProbeFile};
     MltRenderer mlt(test::cl(), ds, opt);
     mlt.prepare();
@@ -399,7 +399,7 @@ TEST_P(ChainTarget, StatesFollowTheClosedFormMarginals) {
     opt.large_step = 0.05f;
     opt.seed = std::uint64_t(env_or("CT_SEED", 11)) + 1000 * cc.proposals;
     opt.burn_in_iters = 32;
-    opt.evaluator = "cl/eval_target.cl";
+    opt.evaluator = "test/cl/eval_target.cl";
     opt.extra_files = {kProbeFile};
     const std::uint32_t snapshots = cc.snapshots, burn = cc.burn, every = cc.every;
 
@@ -586,7 +586,7 @@ TEST_P(ChainTargetSplat, ImageMatchesThePerPixelIntegral) {
         opt.large_step = 0.05f;
         opt.seed = std::uint64_t(env_or("CT_SEED", 11)) * 7919 + 100 * sc.proposals + r;
         opt.burn_in_iters = 32;
-        opt.evaluator = "cl/eval_target.cl";
+        opt.evaluator = "test/cl/eval_target.cl";
         MltRenderer mlt(test::cl(), ds, opt);
         mlt.prepare();
         mlt.step(sc.steps);

@@ -1,4 +1,4 @@
-// The MLT film of 32-bit words (cl/film.cl, src/render/mlt_film.hpp): its
+// The MLT film of 32-bit words (cl/mlt/film.cl, src/render/mlt_film.hpp): its
 // overflow bound, taken to its worst case; stochastic rounding, unbiased
 // where a channel is far below one unit; the same image as the 64-bit
 // reference film within rounding; and bands, which change nothing.

@@ -1,5 +1,6 @@
 // Shared struct layouts agree between host and device, and the sample layout
 // has exactly the slots a scene needs.
+#include "render/programs.hpp"
 #include "scene/sample_layout.hpp"
 #include "scene/shared_layout.hpp"
 #include "test_support.hpp"
@@ -13,7 +14,7 @@ using namespace smallmlt;
 TEST(SharedLayout, DeviceAgreesWithHost) {
     std::vector<std::uint32_t> host = host_layout();
     ClProgram prog(test::cl().build(
-        {"cl/shared_types.h", "cl/geometry.cl", "cl/bvh.cl", "cl/kernels_probe.cl"}, ""));
+        program_files({Program::PathTracer, "", "", {"test/cl/probe.cl"}}, Stage::Geometry), ""));
     ClKernel k(prog.p, "probe_layout");
     ClBuffer out(test::cl(), CL_MEM_WRITE_ONLY, host.size() * sizeof(std::uint32_t));
     k.set_args(out);

@@ -49,12 +49,12 @@ std::uint64_t mlt_peak(const DeviceScene& ds, std::uint32_t threads, std::uint32
 // A renderer that kept a chain state per thread with K proposals per chain
 // would allocate more than the plan's N / K states.
 TEST(MemoryPlan, PredictsWhatMltRendersAllocate) {
-    for (Case c : {Case{"cornell-water", 1024, 1, 24}, Case{"cornell", 4096, 1, 3},
-                   Case{"cornell-glass", 704, 1, 16}, Case{"ajar", 64, 1, 1},
-                   Case{"cornell-water", 1024, 2, 24}, Case{"cornell", 4096, 4, 8},
-                   Case{"cornell-glass", 512, 8, 16},
-                   Case{"cornell-water", 1024, 1, 24, Split::Direct},
-                   Case{"cornell", 4096, 4, 8, Split::Visible}}) {
+    for (Case c :
+         {Case{"cornell-water", 1024, 1, 24}, Case{"cornell", 4096, 1, 3},
+          Case{"cornell-glass", 704, 1, 16}, Case{"ajar", 64, 1, 1},
+          Case{"cornell-water", 1024, 2, 24}, Case{"cornell", 4096, 4, 8},
+          Case{"cornell-glass", 512, 8, 16}, Case{"cornell-water", 1024, 1, 24, Split::Direct},
+          Case{"cornell", 4096, 4, 8, Split::Visible}}) {
         DeviceScene ds = prepare_scene(test::scene(c.scene, 24, 16, c.depth));
         MemoryPlan plan =
             plan_mlt(ds, ChainShape{c.threads, c.proposals, false, false, c.split != Split::None},
@@ -88,7 +88,7 @@ TEST(MemoryPlan, ProposalsShareChainStates) {
 }
 
 // The burn-in keeps each thread's luminance (4 bytes) and its 64-bit
-// fixed-point weight, scanned in place (cl/burnin.cl), with 64-bit block totals;
+// fixed-point weight, scanned in place (cl/mlt/burnin.cl), with 64-bit block totals;
 // each chain its pick, (round, index).
 TEST(MemoryPlan, BurnInScansSixtyFourBitWeights) {
     DeviceScene ds = prepare_scene(test::scene("cornell", 16, 16));
@@ -129,7 +129,8 @@ TEST(ThreadCount, CpuDeviceCountsThisMachinesCores) {
     const std::uint32_t hw = std::max(1u, std::thread::hardware_concurrency());
     d.compute_units = hw;
     const std::uint32_t own = busy_threads(d);
-    EXPECT_EQ(own, std::uint32_t(1) << std::uint32_t(std::ceil(std::log2(hw * kCpuThreadsPerCore))));
+    EXPECT_EQ(own, std::uint32_t(1)
+                       << std::uint32_t(std::ceil(std::log2(hw * kCpuThreadsPerCore))));
     d.compute_units = 4 * hw;
     EXPECT_EQ(busy_threads(d), own);
     d.cpu = false;

@@ -16,7 +16,7 @@ using namespace smallmlt;
 
 namespace {
 
-const char* kProbeFile = "cl/kernels_probe_mlt.cl";
+const char* kProbeFile = "test/cl/probe_mlt.cl";
 
 std::uint32_t bits_of(const SampleLayout& l, std::uint32_t d) {
     if (d < std::uint32_t(kCameraDims)) return kHighBits;
@@ -92,7 +92,7 @@ TEST(MltLazy, LazyProposalEqualsEagerAndCommitStoresIt) {
     EXPECT_GT(lit, int(opt.threads) / 10) << "too few lit paths to test anything";
 }
 
-// f(x, y) = (1 + 3x)(1 + sin^2(2 pi y)), zero where x, y < 1/4 (cl/eval_target.cl):
+// f(x, y) = (1 + 3x)(1 + sin^2(2 pi y)), zero where x, y < 1/4 (test/cl/eval_target.cl):
 // its integral over bin (bx, by) of a 16 x 16 grid (bins never straddle the
 // zero region's edges).
 double target_bin_integral(int bx, int by) {
@@ -126,7 +126,7 @@ TEST_P(MltSampler, ChainStatesFollowAKnownTarget) {
     opt.threads = (opt.proposals <= 4 ? 16384 : 4096) * opt.proposals;
     opt.large_step = 0.3f;
     opt.seed = 5;
-    opt.evaluator = "cl/eval_target.cl";
+    opt.evaluator = "test/cl/eval_target.cl";
     opt.extra_files = {kProbeFile};
     opt.burn_in = false; // chains start uniform: the steps alone must reach the target
     MltRenderer mlt(test::cl(), ds, opt);
@@ -179,7 +179,7 @@ void check_splat_image(Target target, bool kelemen = false) {
         opt.large_step = 0.3f;
         opt.seed = 100 + r;
         opt.burn_in_iters = 64; // b from 2^16 samples
-        opt.evaluator = "cl/eval_target.cl";
+        opt.evaluator = "test/cl/eval_target.cl";
         opt.target = target;
         opt.kelemen = kelemen;
         MltRenderer mlt(test::cl(), ds, opt);
@@ -228,7 +228,7 @@ TEST(MltSplat, TwoStageImageMatchesTheTarget) {
     check_splat_image(Target::TwoStage);
 }
 
-// Kelemen's weights (cl/mlt_step.cl) split each splat between the chain's
+// Kelemen's weights (cl/mlt/mlt_step.cl) split each splat between the chain's
 // estimate and the large steps' independent one: the image is the same.
 TEST(MltSplat, KelemenImageMatchesTheTarget) {
     check_splat_image(Target::Luminance, true);

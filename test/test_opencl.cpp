@@ -30,26 +30,27 @@ std::string error_of(const std::function<void()>& f) {
 TEST(OpenCl, BuildFailurePrintsTheLogWithFileAndLine) {
     // A define that breaks the shared header: the log must point into it.
     std::string msg = error_of([] {
-        test::cl().build({"cl/shared_types.h", "cl/rng.cl"}, "#define u32 @\n");
+        test::cl().build({"cl/core/shared_types.h", "cl/core/rng.cl"}, "#define u32 @\n");
     });
     EXPECT_NE(msg.find("kernel build failed (CL_BUILD_PROGRAM_FAILURE)"), std::string::npos) << msg;
-    EXPECT_NE(msg.find("cl/shared_types.h:"), std::string::npos) << msg;
+    EXPECT_NE(msg.find("cl/core/shared_types.h:"), std::string::npos) << msg;
 }
 
 // Compilers that ignore #line (NVIDIA's names every line "<kernel>:N") get
 // their line numbers mapped back to the embedded file and its own line.
 TEST(OpenCl, AnonymousLogLinesNameTheEmbeddedFile) {
-    std::vector<SourceStart> starts = {{"cl/shared_types.h", 4}, {"cl/rng.cl", 120}};
+    std::vector<SourceStart> starts = {{"cl/core/shared_types.h", 4}, {"cl/core/rng.cl", 120}};
     EXPECT_EQ(cl_name_log_lines("<kernel>:83:5: error: x\n<kernel>:121:2: note\n<kernel>:2:1: w "
                                 "<kernel>:zz <kernel>:7",
                                 starts),
-              "cl/shared_types.h:80:5: error: x\ncl/rng.cl:2:2: note\n(defines):2:1: w "
+              "cl/core/shared_types.h:80:5: error: x\ncl/core/rng.cl:2:2: note\n(defines):2:1: w "
               "<kernel>:zz <kernel>:7");
 }
 
 TEST(OpenCl, RefusedLaunchNamesKernelAndSizes) {
-    ClProgram program(test::cl().build(
-        {"cl/shared_types.h", "cl/geometry.cl", "cl/bvh.cl", "cl/kernels_probe.cl"}, ""));
+    ClProgram program(test::cl().build({"cl/core/shared_types.h", "cl/geometry/geometry.cl",
+                                        "cl/geometry/bvh.cl", "test/cl/probe.cl"},
+                                       ""));
     ClKernel k(program.p, "probe_layout");
     // Its argument set, so that the work-group size is all that is wrong
     // (Mesa's OpenCL checks the arguments first).
@@ -85,8 +86,9 @@ TEST(OpenCl, OnlyThe64BitFilmNeedsInt64Atomics) {
 // compiler does: a loop of 2^21 iterations, more than any limit times the
 // widest unrolling, runs to its end exactly where the device has no limit.
 TEST(OpenCl, LoopIterationLimitIsWhatTheDeviceDoes) {
-    ClProgram program(test::cl().build(
-        {"cl/shared_types.h", "cl/geometry.cl", "cl/bvh.cl", "cl/kernels_probe.cl"}, ""));
+    ClProgram program(test::cl().build({"cl/core/shared_types.h", "cl/geometry/geometry.cl",
+                                        "cl/geometry/bvh.cl", "test/cl/probe.cl"},
+                                       ""));
     ClKernel k(program.p, "probe_loop_count");
     std::vector<cl_uint> ones(64, 1u);
     ClBuffer in(test::cl(), CL_MEM_READ_ONLY, ones.size() * sizeof(cl_uint), ones.data());
@@ -110,8 +112,9 @@ TEST(OpenCl, LoopIterationLimitIsWhatTheDeviceDoes) {
 // argument where work-items diverge, as every kernel here does: reads of
 // scalar, 64-bit and struct arguments there are right, item by item.
 TEST(OpenCl, ArgumentsReadWhereWorkItemsDivergeAreRight) {
-    ClProgram program(test::cl().build(
-        {"cl/shared_types.h", "cl/geometry.cl", "cl/bvh.cl", "cl/kernels_probe.cl"}, ""));
+    ClProgram program(test::cl().build({"cl/core/shared_types.h", "cl/geometry/geometry.cl",
+                                        "cl/geometry/bvh.cl", "test/cl/probe.cl"},
+                                       ""));
     ClKernel k(program.p, "probe_divergent_args");
     const std::uint32_t n = 256;
     ClBuffer out(test::cl(), CL_MEM_WRITE_ONLY, n * sizeof(cl_uint));

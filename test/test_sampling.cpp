@@ -4,6 +4,7 @@
 // from fixed streams on the device, bins what it drew into cells of equal
 // probability under the density the routine claims, and rejects at
 // significance 1e-3 per test (fixed seeds: a pass is repeatable).
+#include "render/programs.hpp"
 #include "stats.hpp"
 #include "test_support.hpp"
 
@@ -54,10 +55,11 @@ DeviceScene five_lights_scene() {
 }
 
 ClProgram sampling_program(const DeviceScene& ds) {
-    return ClProgram(
-        test::cl().build({"cl/shared_types.h", "cl/rng.cl", "cl/layout.cl", "cl/geometry.cl",
-                          "cl/bsdf.cl", "cl/light.cl", "cl/kernels_probe_sampling.cl"},
-                         ds.layout.defines()));
+    return ClProgram(test::cl().build(
+        program_files(
+            {Program::PathTracer, "cl/sampling/sample_omc.cl", "", {"test/cl/probe_sampling.cl"}},
+            Stage::Shading),
+        ds.layout.defines()));
 }
 
 template <typename T> std::vector<T> read_all(const ClBuffer& b, std::size_t n) {

@@ -1,4 +1,4 @@
-// The small step of a packed number (cl/sample_chain.cl) is integer-only: it
+// The small step of a packed number (cl/sampling/sample_chain.cl) is integer-only: it
 // follows the exponential law of Kelemen et al. within one grid step, is
 // symmetric, and the number a lazy evaluation reads is the number a commit
 // stores, for every slot width (24, 16 and a widened 17-bit light pick).
@@ -17,7 +17,7 @@ using namespace smallmlt;
 
 namespace {
 
-const char* kProbeFile = "cl/kernels_probe_mlt.cl";
+const char* kProbeFile = "test/cl/probe_mlt.cl";
 
 // Features whose layout has 24-bit (film, BSDF, light) and 16-bit (Fresnel,
 // roulette) slots, and a light pick of 16 bits (<= 256 lights) or 17 (300).
@@ -157,7 +157,7 @@ TEST(SmallStep, LazyEvaluationAndCommitAgreeOnEveryNumber) {
 }
 
 // The commit writes a chain's words whole, in bit-stream order (PssWriter,
-// cl/pss.cl): the bits after the last committed number in its word are
+// cl/sampling/pss.cl): the bits after the last committed number in its word are
 // zero (dead numbers, never read), and the words after it are not touched.
 TEST(SmallStep, CommitWritesWholeWordsUpToTheLastCommittedNumber) {
     CommitRun run = run_commit(300);

@@ -1,8 +1,9 @@
-// The path tracer's low-discrepancy sample source (cl/sobol.cl, cl/sample_sobol.cl):
-// every pair of numbers is a (0,m,2)-net in each aligned block of 2^m
+// The path tracer's low-discrepancy sample source (cl/sampling/sobol.cl,
+// cl/sampling/sample_sobol.cl): every pair of numbers is a (0,m,2)-net in each aligned block of 2^m
 // samples (exact checks), every number is stratified on its own, different
 // pairs and pixels are independent (chi-square at 1e-3 per test), and the
 // image it gives is PT's image per pixel block (Welch, Holm at 0.01).
+#include "render/programs.hpp"
 #include "stats.hpp"
 #include "test_support.hpp"
 
@@ -21,8 +22,11 @@ constexpr std::uint32_t kFilm = ~0u; // "bounce" of the film pair
 class SobolProbe {
   public:
     explicit SobolProbe(const DeviceScene& ds)
-        : program_(test::cl().build({"cl/shared_types.h", "cl/rng.cl", "cl/layout.cl",
-                                     "cl/sobol.cl", "cl/sample_sobol.cl", "cl/kernels_probe_sobol.cl"},
+        : program_(test::cl().build(program_files({Program::PathTracer,
+                                                   "cl/sampling/sample_sobol.cl",
+                                                   "",
+                                                   {"test/cl/probe_sobol.cl"}},
+                                                  Stage::Sampling),
                                     ds.layout.defines())) {}
 
     // Slots `slot` and `slot` + 1 of `bounce` (or the film position) for

@@ -23,7 +23,7 @@ struct Parts {
 // The parts of n OMC paths (keys rng_key(seed, i, 0)) under split s.
 Parts trace_parts(const DeviceScene& ds, Split s, std::uint32_t n, std::uint64_t seed) {
     std::vector<std::string> files = pt_program_files(PtSampler::Random);
-    files.push_back("cl/kernels_probe_split.cl");
+    files.push_back("test/cl/probe_split.cl");
     ClProgram program(test::cl().build(files, ds.layout.defines() + split_defines(s)));
     ClKernel k(program.p, "probe_split");
     SceneBuffers scene(test::cl(), ds);

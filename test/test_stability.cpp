@@ -130,7 +130,7 @@ TEST(StuckChains, AreCountedWhereABrightCausticHoldsThem) {
 // that became stuck are counted once each, as their marks say. On Mesa's
 // OpenCL, a function that changed its by-value ChainValue changed the
 // caller's, so a chain that became stuck looked stuck before the step and
-// none was counted (cl/chain_value.cl, chain_stayed).
+// none was counted (cl/mlt/chain_value.cl, chain_stayed).
 TEST(StuckChains, EveryChainThatBecameStuckIsCountedOnce) {
     DeviceScene ds = prepare_scene(test::scene("tiny-caustic", 16, 16));
     MltOptions opt;

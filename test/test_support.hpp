@@ -41,7 +41,7 @@ inline Scene scene(const std::string& name, int width, int height, int depth = -
 }
 
 // A scene with no geometry whose sample layout is `f`: enough for probe
-// kernels and for the known-target evaluator (cl/eval_target.cl).
+// kernels and for the known-target evaluator (test/cl/eval_target.cl).
 inline DeviceScene layout_only_scene(const SceneFeatures& f, int width = 4, int height = 4) {
     DeviceScene ds;
     ds.layout = make_layout(f);
@@ -85,7 +85,7 @@ inline std::vector<Image> render_pt_batches(const DeviceScene& ds, std::uint64_t
     return out;
 }
 
-// Runs probe_lazy_eager (cl/kernels_probe_mlt.cl, which `mlt` must have
+// Runs probe_lazy_eager (test/cl/probe_mlt.cl, which `mlt` must have
 // been built with) on every chain with proposal key seed 99: per chain the
 // lazily evaluated proposal, the same materialized and replayed, and the
 // committed state replayed (F, live bounces in w).

@@ -1,4 +1,4 @@
-// Host-side seed derivation, with the mixer of cl/rng.cl (SplitMix64's
+// Host-side seed derivation, with the mixer of cl/core/rng.cl (SplitMix64's
 // finalizer), so each purpose of a render gets its own independent streams.
 #pragma once
 #include <cstdint>

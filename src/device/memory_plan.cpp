@@ -136,11 +136,11 @@ MemoryPlan plan_mlt(const DeviceScene& ds, const ChainShape& shape, std::size_t 
     add_film(p, pixels(ds), mlt_film_pixel_bytes(shape.film_atomics64), max_alloc);
     p.buffers.push_back(
         {"stats", group_rows(threads) * MLT_STAT_COUNT * sizeof(std::uint64_t), false});
-    // Each chain's start, (round, index) (cl/burnin.cl).
+    // Each chain's start, (round, index) (cl/mlt/burnin.cl).
     p.buffers.push_back({"picks", chains * 2 * sizeof(std::uint32_t), false});
     p.buffers.push_back({"target weights", shape.target_cells * sizeof(float), false});
     p.buffers.push_back({"luminance", threads * sizeof(float), true});
-    // The burn-in's 64-bit fixed-point weights, scanned in place (cl/burnin.cl).
+    // The burn-in's 64-bit fixed-point weights, scanned in place (cl/mlt/burnin.cl).
     p.buffers.push_back({"scan", threads * sizeof(std::uint64_t), true});
     // Several buffers; their sum counts as one entry (at least as big as each).
     p.buffers.push_back({"scan blocks", scan_bytes(threads, scan_wg, sizeof(std::uint64_t)), true});
@@ -151,7 +151,7 @@ MemoryPlan plan_mlt(const DeviceScene& ds, const ChainShape& shape, std::size_t 
         p.buffers.push_back(
             {"OMC stats", group_rows(pixels(ds)) * PT_STAT_COUNT * sizeof(std::uint64_t), false});
     }
-    // The parts and pixel of each burn-in sample (cl/kernels_mlt.cl): for a
+    // The parts and pixel of each burn-in sample (cl/kernels/mlt.cl): for a
     // split, and for the two-stage target's weights.
     if (shape.omc_part || shape.target_cells > 1)
         p.buffers.push_back({"OMC samples", threads * 8 * sizeof(float), true});
@@ -208,8 +208,8 @@ void require_work_group(const DeviceInfo& dev) {
 }
 
 std::uint32_t busy_threads(const DeviceInfo& dev) {
-    std::uint64_t per_unit = dev.cpu ? kCpuThreadsPerCore
-                                     : std::max<std::uint64_t>(dev.max_work_group, 1) * 8;
+    std::uint64_t per_unit =
+        dev.cpu ? kCpuThreadsPerCore : std::max<std::uint64_t>(dev.max_work_group, 1) * 8;
     std::uint32_t units = std::max(1u, dev.compute_units);
     // A CPU device runs on this machine's cores, however many compute units
     // it reports (Mesa's llvmpipe reports 8 on 2 cores).

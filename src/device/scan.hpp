@@ -1,4 +1,4 @@
-// Inclusive prefix sums on the device with the kernels of cl/scan.cl:
+// Inclusive prefix sums on the device with the kernels of cl/core/scan.cl:
 // blocks of 2 * work-group elements, then the block totals, recursively.
 #pragma once
 #include "device/ocl.hpp"

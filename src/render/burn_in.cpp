@@ -12,7 +12,7 @@ namespace smallmlt {
 
 namespace {
 
-// The kernels' rng_key (cl/rng.cl).
+// The kernels' rng_key (cl/core/rng.cl).
 std::uint64_t rng_key(std::uint64_t seed, std::uint32_t a, std::uint32_t b) {
     return rng_mix64(seed + rng_mix64((std::uint64_t(a) << 32) | b));
 }

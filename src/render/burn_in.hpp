@@ -1,6 +1,6 @@
 // Burn-in by OMC (Frolov and Galaktionov, section 3.1): how its samples are
 // numbered, the weighted reservoir that picks the chains' starts on the
-// device (cl/burnin.cl), and what its paths leave for the split's OMC part.
+// device (cl/mlt/burnin.cl), and what its paths leave for the split's OMC part.
 #pragma once
 #include "device/ocl.hpp"
 #include "device/scan.hpp"
@@ -15,7 +15,7 @@ namespace smallmlt {
 // OMC samples of a render are numbered by (round, index): round r < T of
 // burn-in (T = --burn-in-iters) draws indices 0..N-1, and the fresh starts of
 // --burn-in none are round T. Sample (r, i) is the path of key
-// rng_key(omc_round_seed(omc_seed, r), i, 0) (cl/rng.cl), so keys stay
+// rng_key(omc_round_seed(omc_seed, r), i, 0) (cl/core/rng.cl), so keys stay
 // distinct however many rounds of however many threads run (a single 32-bit
 // number r * N + i would wrap at 2^32 and repeat samples), and mlt_init
 // regenerates a picked path from its round's seed and its index.
@@ -24,7 +24,7 @@ std::uint64_t omc_round_seed(std::uint64_t omc_seed, std::uint32_t round);
 std::uint64_t omc_sample_key(std::uint64_t omc_seed, std::uint32_t round, std::uint32_t index);
 
 // Where the burn-in's samples lie on the film (BurnInFilm,
-// cl/burnin_film.cl): the first Sobol samples of the pixels' sequences under
+// cl/sampling/burnin_film.cl): the first Sobol samples of the pixels' sequences under
 // pixel_seed (the split's OMC part's), spread over the P pixels in the order
 // (j * step) mod P, step coprime with P and near 0.618 P so that consecutive
 // samples land far apart, from an offset in [0, P) drawn from offset_seed.
@@ -39,7 +39,7 @@ std::pair<std::uint32_t, std::uint32_t> burn_in_film_sample(const BurnInFilm& f,
 // `samples` samples: where the OMC part's path tracer begins.
 std::uint32_t burn_in_film_end(const BurnInFilm& f, std::uint32_t pixels, std::uint64_t samples);
 
-// The exponent e of the burn-in's fixed-point weights (cl/burnin.cl,
+// The exponent e of the burn-in's fixed-point weights (cl/mlt/burnin.cl,
 // burnin_weights): the largest with sum * 2^e < 2^62, where sum is the sum
 // of a round's finite luminances (0 if it is not positive).
 int burnin_weight_exponent(double sum);
@@ -51,7 +51,7 @@ int burnin_weight_exponent(double sum);
 std::uint64_t burnin_replace_threshold(double s, double total, std::uint32_t round);
 
 // The burn-in's chain starts, on the device, pooled over rounds by a
-// weighted reservoir (cl/burnin.cl): in each round, every chain replaces its
+// weighted reservoir (cl/mlt/burnin.cl): in each round, every chain replaces its
 // pick with probability s_r / (s_0 + .. + s_r) by a sample of the round
 // drawn in proportion to luminance (fixed-point weights, their prefix sum,
 // binary search). After the last round each chain's pick is an independent
@@ -59,8 +59,8 @@ std::uint64_t burnin_replace_threshold(double s, double total, std::uint32_t rou
 // none had light).
 class BurnInPicker {
   public:
-    // For rounds of up to max_n samples; `program` holds cl/rng.cl,
-    // cl/scan.cl (SCAN_T ulong) and cl/burnin.cl.
+    // For rounds of up to max_n samples; `program` holds cl/core/rng.cl,
+    // cl/core/scan.cl (SCAN_T ulong) and cl/mlt/burnin.cl.
     BurnInPicker(const ClContext& cl, cl_program program, std::uint32_t max_n);
     // Adds the next round, the samples of burn-in round `round`, of n samples
     // whose luminances are `lum` on the device and `host` (the same values,
@@ -83,7 +83,7 @@ class BurnInPicker {
 
 // What the burn-in's paths leave for a split (src/render/split.hpp): per
 // pixel and channel the sums of their OMC and MLT parts, and per pixel how
-// many landed there (cl/kernels_mlt.cl, mlt_luminance, writes 8 floats per
+// many landed there (cl/kernels/mlt.cl, mlt_luminance, writes 8 floats per
 // path: the OMC part's RGB, the pixel's bits, the MLT part's RGB, its rays;
 // a dropped sample's parts are 0).
 struct BurnInParts {
@@ -100,11 +100,10 @@ struct BurnInParts {
     // squared luminances) and the samples per pixel: P times the mean of the
     // unbiased sample variances of the pixels that have two samples or more
     // (which pixels those are does not depend on what they hold: where paths
-    // land is fixed by cl/burnin_film.cl). Subtracting sum_p mu_p^2 from the second moment instead
-    // is unbiased too, but at a few samples per pixel it is the difference
-    // of two large, noisy sums and came out 0 (no OMC samples at all) for
-    // a light's edges at 512x512. Without such pixels: the second moment,
-    // an overestimate.
+    // land is fixed by cl/sampling/burnin_film.cl). Subtracting sum_p mu_p^2 from the second moment
+    // instead is unbiased too, but at a few samples per pixel it is the difference of two large,
+    // noisy sums and came out 0 (no OMC samples at all) for a light's edges at 512x512. Without
+    // such pixels: the second moment, an overestimate.
     double variance(const std::vector<double>& sums, const std::vector<double>& y2) const;
     // A part's mean luminance per path, from its sums per pixel (`sums`, RGB).
     double mean(const std::vector<double>& sums) const;

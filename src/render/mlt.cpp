@@ -5,6 +5,7 @@
 #include "base/error.hpp"
 #include "base/rng.hpp"
 #include "device/scan.hpp"
+#include "render/programs.hpp"
 #include "render/ranks.hpp"
 
 #include <algorithm>
@@ -54,7 +55,7 @@ std::uint64_t max_alloc(const ClContext& cl, const MltOptions& opt) {
     return opt.max_alloc_bytes ? opt.max_alloc_bytes : cl.device().max_alloc_bytes;
 }
 
-// Modes of the mlt_owed kernel (cl/kernels_mlt.cl).
+// Modes of the mlt_owed kernel (cl/kernels/mlt.cl).
 constexpr cl_uint kOwedAdd = 0, kOwedUndo = 1, kOwedFlush = 2;
 
 // A luminance sum in MLT_B_FRAC_BITS fixed point, as a number.
@@ -72,15 +73,11 @@ void mlt_require_device(const DeviceInfo& d, const MltOptions& opt) {
 }
 
 std::vector<std::string> mlt_program_files(const MltOptions& opt) {
-    std::vector<std::string> files = {"cl/shared_types.h", "cl/rng.cl",          "cl/layout.cl",
-                                      "cl/pss.cl",         "cl/sample_chain.cl", "cl/sobol.cl",
-                                      "cl/burnin_film.cl", "cl/geometry.cl",     "cl/bvh.cl",
-                                      "cl/bsdf.cl",        "cl/light.cl",        "cl/path.cl",
-                                      "cl/camera.cl",      "cl/eval_result.cl",  opt.evaluator,
-                                      "cl/chain_value.cl", "cl/film.cl",         "cl/mlt_step.cl",
-                                      "cl/kernels_mlt.cl", "cl/scan.cl",         "cl/burnin.cl"};
-    files.insert(files.end(), opt.extra_files.begin(), opt.extra_files.end());
-    return files;
+    ProgramSpec spec;
+    spec.program = Program::Mlt;
+    spec.evaluator = opt.evaluator;
+    spec.extra = opt.extra_files;
+    return program_files(spec);
 }
 
 MltRenderer::MltRenderer(const ClContext& cl, const DeviceScene& ds, const MltOptions& opt)

@@ -1,4 +1,4 @@
-// Primary-sample-space MLT on the device (cl/kernels_mlt.cl): N chains, one
+// Primary-sample-space MLT on the device (cl/kernels/mlt.cl): N chains, one
 // per work-item, with packed states and lazy proposals. The host estimates
 // the normalization b, starts the chains, runs steps and assembles the image.
 #pragma once
@@ -55,15 +55,15 @@ struct MltOptions {
     double omc_effort = 1.0;
     // The chains' target (src/render/target.hpp).
     Target target = Target::Luminance;
-    // Kelemen's weights (Kelemen et al. 2002, section 5; cl/mlt_step.cl):
+    // Kelemen's weights (Kelemen et al. 2002, section 5; cl/mlt/mlt_step.cl):
     // large steps also count as independent samples, combined with the
     // chains' expected values by the balance heuristic. Off: expected values
     // alone, and the image's mean is b.
     bool kelemen = false;
-    // The file that defines eval_state: cl/eval_path.cl renders the scene;
-    // the sampler tests use cl/eval_target.cl, a known target (2D, or with
+    // The file that defines eval_state: cl/path/eval_path.cl renders the scene;
+    // the sampler tests use test/cl/eval_target.cl, a known target (2D, or with
     // bounces on a layout that has bounce slots).
-    std::string evaluator = "cl/eval_path.cl";
+    std::string evaluator = "cl/path/eval_path.cl";
     std::vector<std::string> extra_files; // appended to the program (test probes)
 };
 
@@ -83,7 +83,7 @@ void mlt_require_device(const DeviceInfo& d, const MltOptions& opt);
 std::vector<std::string> mlt_program_files(const MltOptions& opt);
 
 // A large step's or burn-in sample's luminance I in MLT_B_FRAC_BITS fixed
-// point (mlt_b_sample of cl/mlt_step.cl); 0 unless I > 0.
+// point (mlt_b_sample of cl/mlt/mlt_step.cl); 0 unless I > 0.
 std::uint64_t b_sample_fixed(float lum);
 // b from the fixed-point sum of `samples` luminances.
 double mlt_b(std::uint64_t lum_fixed, std::uint64_t samples);
@@ -222,7 +222,7 @@ class MltRenderer : public Integrator {
     void omc_after_step(bool chains);
     void choose_omc_rate();
     Image image_of(const Tally& summed, bool mlt, bool omc) const;
-    // Runs mlt_owed in `mode` (MLT_OWED_* of cl/kernels_mlt.cl).
+    // Runs mlt_owed in `mode` (MLT_OWED_* of cl/kernels/mlt.cl).
     void owed(std::uint32_t mode) const;
     struct BEstimate {
         double b = 0, rel_error = 0;

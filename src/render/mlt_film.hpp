@@ -1,5 +1,5 @@
 // The MLT film: on the device, words of 32-bit fixed point in up to
-// FILM_MAX_BANDS bands (cl/film.cl), added to by 32-bit atomics; on the
+// FILM_MAX_BANDS bands (cl/mlt/film.cl), added to by 32-bit atomics; on the
 // host, 64-bit sums into which the device's words are drained every
 // steps_per_drain steps, before any word could overflow.
 //
@@ -15,7 +15,7 @@
 // Hence, even if every splat of the pass lands on one pixel, a word holds at
 // most T S (2^F / 0.0722 (1 + 2^-10) + 3) (the 2^-10 covers float rounding
 // and the 2^-24 rounding of gathered stays), which plan_film keeps below
-// 2^32. With Kelemen's weights (cl/mlt_step.cl) a large proposal adds up to
+// 2^32. With Kelemen's weights (cl/mlt/mlt_step.cl) a large proposal adds up to
 // 1 more, so a step adds at most 2K: the first term doubles.
 #pragma once
 #include "device/memory_plan.hpp"

@@ -1,5 +1,6 @@
 #include "render/path_tracer.hpp"
 
+#include "render/programs.hpp"
 #include "render/ranks.hpp"
 
 #include <algorithm>
@@ -8,10 +9,10 @@
 namespace smallmlt {
 
 std::vector<std::string> pt_program_files(PtSampler sampler) {
-    const char* source = sampler == PtSampler::Sobol ? "cl/sample_sobol.cl" : "cl/sample_omc.cl";
-    return {"cl/shared_types.h", "cl/rng.cl",       "cl/layout.cl", "cl/sobol.cl", source,
-            "cl/geometry.cl",    "cl/bvh.cl",       "cl/bsdf.cl",   "cl/light.cl", "cl/path.cl",
-            "cl/camera.cl",      "cl/kernels_pt.cl"};
+    ProgramSpec spec;
+    spec.sample_source =
+        sampler == PtSampler::Sobol ? "cl/sampling/sample_sobol.cl" : "cl/sampling/sample_omc.cl";
+    return program_files(spec);
 }
 
 namespace {

@@ -1,5 +1,5 @@
 // Ordinary Monte Carlo (path tracing) on the device: owns the scene buffers,
-// the per-pixel accumulators and the pt_render kernel (cl/kernels_pt.cl).
+// the per-pixel accumulators and the pt_render kernel (cl/kernels/pt.cl).
 #pragma once
 #include "device/memory_plan.hpp"
 #include "device/ocl.hpp"
@@ -17,14 +17,14 @@
 namespace smallmlt {
 
 // Where the path tracer's numbers come from: Owen-scrambled Sobol points
-// (cl/sample_sobol.cl) or the independent stream of each sample's key
-// (cl/sample_omc.cl, what burn-in and MLT's large steps use).
+// (cl/sampling/sample_sobol.cl) or the independent stream of each sample's key
+// (cl/sampling/sample_omc.cl, what burn-in and MLT's large steps use).
 enum class PtSampler { Sobol, Random };
 
 // Kernel files of the path-tracing program, in build order.
 std::vector<std::string> pt_program_files(PtSampler sampler);
 
-// Stratified per-pixel samples of the OMC part of a split (cl/path.cl), on
+// Stratified per-pixel samples of the OMC part of a split (cl/path/path.cl), on
 // the scene buffers of the MLT render it belongs to. Its film is on the host:
 // the device holds one scratch band of omc_scratch_pixels, rendered band by
 // band and added into the host's sums, so the split adds little to the
@@ -33,7 +33,7 @@ struct OmcPart {
     Split split = Split::Direct;
     const SceneBuffers* scene = nullptr;
     // Each pixel's first Sobol sample number: those before it are the
-    // burn-in's (cl/burnin_film.cl).
+    // burn-in's (cl/sampling/burnin_film.cl).
     std::uint32_t first_sample = 0;
 };
 

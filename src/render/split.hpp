@@ -1,5 +1,5 @@
 // The split of each path's contribution between an OMC part and an MLT part
-// (cl/path.cl): light that reaches the camera after fewer than L surface
+// (cl/path/path.cl): light that reaches the camera after fewer than L surface
 // vertices is the OMC part, rendered by stratified per-pixel samples (what
 // path tracing renders well: the emission the camera sees, direct light);
 // the rest is the target of the Markov chains. The parts add up to the path
@@ -29,7 +29,7 @@ constexpr Split kDefaultSplit = Split::Auto;
 const char* split_name(Split s);
 // Throws UsageError naming `flag` for an unknown name.
 Split parse_split(const std::string& flag, const std::string& name);
-// L: terms after fewer vertices are the OMC part (PATH_SPLIT of cl/path.cl);
+// L: terms after fewer vertices are the OMC part (PATH_SPLIT of cl/path/path.cl);
 // Auto's burn-in traces with kChainsSplit's.
 std::uint32_t split_vertices(Split s);
 std::string split_defines(Split s);

@@ -1,5 +1,5 @@
-// The chains' target (cl/mlt_step.cl): I(x) = lum(F(x)) w(x), with w a
-// weight per cell of pixels (TargetCells in cl/shared_types.h).
+// The chains' target (cl/mlt/mlt_step.cl): I(x) = lum(F(x)) w(x), with w a
+// weight per cell of pixels (TargetCells in cl/core/shared_types.h).
 // - Target::Luminance: w = 1, the luminance of Kelemen et al. (2002).
 // - Target::TwoStage: w = c_max / max(c, floor), with c a cell's mean
 //   luminance of the chains' part as the first half of the burn-in measured

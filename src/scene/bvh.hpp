@@ -1,6 +1,6 @@
 // Bounding volume hierarchy over the scene's triangles: binned SAH build on
-// the host, flattened depth-first into BvhNode (cl/shared_types.h) for the
-// traversal in cl/bvh.cl.
+// the host, flattened depth-first into BvhNode (cl/core/shared_types.h) for the
+// traversal in cl/geometry/bvh.cl.
 #pragma once
 #include "scene/scene.hpp"
 

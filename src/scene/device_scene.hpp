@@ -1,4 +1,4 @@
-// A scene flattened into the structs of cl/shared_types.h, ready to copy to
+// A scene flattened into the structs of cl/core/shared_types.h, ready to copy to
 // the device: triangles in BVH leaf order, BVH nodes, materials, the light
 // table, the camera frame and the sample layout that fits the scene.
 #pragma once

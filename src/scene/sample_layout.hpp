@@ -14,7 +14,7 @@ struct SceneFeatures {
     int depth = 0;
 };
 
-// Russian roulette (cl/path.cl, path_survives): after scattering at a bounce
+// Russian roulette (cl/path/path.cl, path_survives): after scattering at a bounce
 // >= start, a path whose throughput measure m (its largest channel, or its
 // luminance) gives p = min(cap, m / threshold) < 1 survives with probability
 // p and is divided by it. The defaults were chosen by equal-time error over
@@ -47,7 +47,7 @@ struct SampleLayout {
     bool has(Slot s) const { return index[s] >= 0; }
     int vector_dims() const { return kCameraDims + depth * bounce_dims; }
     int vector_bits() const { return kCameraDims * kHighBits + depth * bounce_bits; }
-    // A chain's state (cl/pss.cl): 32-bit words of its numbers, packed at
+    // A chain's state (cl/sampling/pss.cl): 32-bit words of its numbers, packed at
     // their slots' precision or one float32 per number (the reference
     // build), and the bytes it keeps in all, words and ChainValue.
     std::uint32_t chain_words(bool float32_states) const;

@@ -1,4 +1,4 @@
-// Host-side checks of the shared struct layouts (cl/shared_types.h); the
+// Host-side checks of the shared struct layouts (cl/core/shared_types.h); the
 // probe_layout kernel reports the device's view in the same order, and
 // test/test_layout.cpp compares the two.
 #include "scene/shared_layout.hpp"

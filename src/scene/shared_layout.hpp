@@ -1,5 +1,5 @@
 // Size and field offsets of every shared struct as the host compiler lays
-// them out, in the order of the probe_layout kernel (cl/kernels_probe.cl).
+// them out, in the order of the probe_layout kernel (test/cl/probe.cl).
 #pragma once
 #include "shared_types.h"
 

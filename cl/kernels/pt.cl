@@ -1,7 +1,7 @@
 /* Entry point of the path tracer (ordinary Monte Carlo). One work-item per
  * pixel; its k-th sample of pixel p reads the numbers of
- * smp_pixel(seed, p, offset + k * stride) (cl/sample_sobol.cl or
- * cl/sample_omc.cl; offset 0 and stride 1 in one process, rank r of R
+ * smp_pixel(seed, p, offset + k * stride) (cl/sampling/sample_sobol.cl or
+ * cl/sampling/sample_omc.cl; offset 0 and stride 1 in one process, rank r of R
  * ranks takes offset r and stride R), so an image depends only on the seed
  * and the sample count, not on how samples are split into passes. The
  * film is in bands (src/device/memory_plan.hpp): this run covers pixels
@@ -9,7 +9,7 @@
  * Each work-group adds its rays and dropped non-finite samples to its row of
  * stats (PT_STAT_*; first is a multiple of the group size).
  * Built with PT_OMC_PART, it renders only the OMC part of the split
- * (cl/path.cl): paths stop after the PATH_SPLIT - 1 bounces that part
+ * (cl/path/path.cl): paths stop after the PATH_SPLIT - 1 bounces that part
  * needs. */
 
 #ifdef PT_OMC_PART

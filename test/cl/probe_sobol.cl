@@ -1,4 +1,4 @@
-/* Test probe of the Sobol sample source (cl/sample_sobol.cl): work-item
+/* Test probe of the Sobol sample source (cl/sampling/sample_sobol.cl): work-item
  * i < n writes the numbers of slots `slot` and `slot` + 1 of `bounce` (or the film
  * position when bounce is ~0u) for sample first + i of pixel `pixel`. */
 

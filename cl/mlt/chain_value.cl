@@ -1,5 +1,5 @@
-/* A chain's ChainValue (cl/shared_types.h): G(x) = F(x) w(x) of its current
- * state x (the contribution times the target's weight, cl/mlt_step.cl),
+/* A chain's ChainValue (cl/core/shared_types.h): G(x) = F(x) w(x) of its current
+ * state x (the contribution times the target's weight, cl/mlt/mlt_step.cl),
  * its live bounces, its run of rejections with the stuck mark, and the stay
  * weight x has gathered but not yet splatted. */
 

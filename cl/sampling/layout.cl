@@ -3,7 +3,7 @@
  * Numbers 0 and 1 place the sample on the film (LAYOUT_CAMERA_BITS each);
  * each bounce then owns LAYOUT_BOUNCE_DIMS numbers, high-precision slots
  * first. Slots a scene does not need have the index -1. Bit offsets are those
- * of the packed chain state (cl/pss.cl): a contiguous bit stream. */
+ * of the packed chain state (cl/sampling/pss.cl): a contiguous bit stream. */
 
 /* Where one number lives: its index in the vector (the random stream's
  * dimension), its offset in the packed bit stream and its stored bits. */

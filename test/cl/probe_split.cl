@@ -4,8 +4,8 @@
 
 __kernel void probe_split(__global const Triangle* tris, __global const BvhNode* nodes,
                           __global const Material* mats, __global const LightEntry* lights,
-                          const Frame frame, const ulong seed, const uint n,
-                          __global float4* omc, __global float4* rest) {
+                          const Frame frame, const ulong seed, const uint n, __global float4* omc,
+                          __global float4* rest) {
     uint i = get_global_id(0);
     if (i >= n) return;
     SceneView sc = path_scene(tris, nodes, mats, lights, &frame);

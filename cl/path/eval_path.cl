@@ -1,6 +1,6 @@
 /* What an MLT chain evaluates for a state: the film position from numbers 0
  * and 1 (uniform over the whole film), then the path; F is the path's MLT
- * part (cl/path.cl), and its OMC part comes along for the burn-in. The sampler tests swap
+ * part (cl/path/path.cl), and its OMC part comes along for the burn-in. The sampler tests swap
  * this file for one with a known target function. */
 
 inline EvalResult eval_state(const SceneView* sc, const Frame* frame, SampleSource* src) {

@@ -1,7 +1,7 @@
 /* Structs seen by both the host (C++17) and the kernels (OpenCL C 1.2).
  * This header is their only definition. Fields are 32-bit scalars or arrays
  * of them, so size and offsets are the same on every compiler; the host
- * static_asserts them (src/shared_layout.cpp) and the probe_layout kernel
+ * static_asserts them (src/scene/shared_layout.cpp) and a probe kernel
  * reports the device's view for a test to compare. */
 #ifndef SMALLMLT_SHARED_TYPES_H
 #define SMALLMLT_SHARED_TYPES_H
@@ -83,7 +83,7 @@ typedef struct {
 
 /* A chain's value beside its packed numbers: G(x) = F(x) w(x), the RGB
  * contribution of the path of its current state x times the target's weight
- * at its pixel (cl/mlt_step.cl; lum(G) is the target I), and in `meta`:
+ * at its pixel (cl/mlt/mlt_step.cl; lum(G) is the target I), and in `meta`:
  * - bits 0-7: how many bounces of x's numbers are live (the path scattered
  *   that many times; numbers of later bounces are dead and drawn afresh when
  *   a proposal reaches them);
@@ -109,7 +109,7 @@ typedef struct {
 #define CHAIN_RUN_SHIFT 9
 #define CHAIN_RUN_MAX 0x7FFFFFu
 
-/* The MLT film on the device (cl/film.cl): pixel p lies in band
+/* The MLT film on the device (cl/mlt/film.cl): pixel p lies in band
  * p / band_pixels at pixel index p % band_pixels, as three words (R, G, B)
  * of fixed point with frac_bits fraction bits; scale = 2^frac_bits. Words
  * are 32-bit, except in the 64-bit reference build (FILM_ATOMICS64), whose
@@ -121,7 +121,7 @@ typedef struct {
     f32 scale;
 } FilmShape;
 
-/* The cells of the chains' target weight (cl/mlt_step.cl, mlt_weight):
+/* The cells of the chains' target weight (cl/mlt/mlt_step.cl, mlt_weight):
  * pixel (x, y) lies in cell (y >> shift) * columns + (x >> shift), of
  * 2^shift x 2^shift pixels; the target is I = lum(F) times its cell's weight
  * (src/render/target.hpp). One cell of weight 1 is the plain luminance.
@@ -131,7 +131,7 @@ typedef struct {
     u32 columns;
 } TargetCells;
 
-/* Where the burn-in's samples lie on the film (cl/burnin_film.cl): sample
+/* Where the burn-in's samples lie on the film (cl/sampling/burnin_film.cl): sample
  * g = round * per_round + index, with h = g + offset, is Sobol sample
  * h / P of pixel ((h mod P) * step) mod P (P pixels, step coprime with P),
  * in the Sobol sequences of seed (seed_hi, seed_lo): the OMC part's. 20

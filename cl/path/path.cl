@@ -1,7 +1,8 @@
 /* The path: unidirectional path tracing with next-event estimation and MIS
- * (power heuristic) at diffuse vertices, Russian roulette by the throughput
- * (path_survives). Written once for every method: it reads its numbers only
- * through smp_uniform (via path_number) and does not know who provides them.
+ * (power heuristic) at every vertex whose material has a non-specular lobe,
+ * Russian roulette by the throughput (path_survives). Written once for every
+ * method: it reads its numbers only through smp_number and does not know who
+ * provides them, and it reaches materials only through cl/shading/shading.cl.
  * Bounce b owns the numbers for scattering at the b-th surface vertex, so a
  * path of depth D (D bounces at most) consumes bounces 0 .. D-1.
  *
@@ -26,10 +27,10 @@ typedef struct {
 } SceneView;
 
 typedef struct {
-    float3 omc;  /* terms with L < PATH_SPLIT: the OMC part, RGB */
-    float3 rest; /* the other terms: the MLT part F(x), RGB */
-    uint rays;   /* rays traced: closest-hit and shadow */
-    uint bounces;    /* surface vertices that scattered (read their bounce's numbers) */
+    float3 omc;   /* terms with L < PATH_SPLIT: the OMC part, RGB */
+    float3 rest;  /* the other terms: the MLT part F(x), RGB */
+    uint rays;    /* rays traced: closest-hit and shadow */
+    uint bounces; /* surface vertices that scattered (read their bounce's numbers) */
 } PathResult;
 
 inline float3 path_rgb(const f32 c[3]) {
@@ -40,26 +41,19 @@ inline float path_max3(float3 v) {
     return fmax(v.x, fmax(v.y, v.z));
 }
 
-#if LAYOUT_BOUNCE_DIMS > 0
-/* Number `slot` of bounce `bounce` from the sample source. */
-inline float path_number(SampleSource* src, uint bounce, int slot) {
-    return smp_uniform(src, bounce, layout_slot(bounce, slot));
-}
-#endif
-
-/* Direct light at a diffuse vertex x with normal n_wo (facing the viewer). */
-float3 path_next_event(const SceneView* sc, SampleSource* src, uint bounce, float3 x, float3 n_wo,
-                       const Material* m, uint* rays) {
+/* Direct light at vertex x seen from wo, with normal n_wo (facing wo). */
+float3 path_next_event(const SceneView* sc, SampleSource* src, uint bounce, float3 x, float3 wo,
+                       float3 n_wo, const Material* m, uint* rays) {
 #if LAYOUT_HAS_NEE
     uint pick = 0;
 #if SLOT_LIGHT_PICK >= 0
-    float u_pick = path_number(src, bounce, SLOT_LIGHT_PICK);
+    float u_pick = smp_number(src, bounce, SLOT_LIGHT_PICK);
     pick = light_pick(sc->lights, sc->num_lights,
                       (uint)(u_pick * (float)(1u << SLOT_LIGHT_PICK_BITS)));
 #endif
     const __global Triangle* lt = &sc->tris[sc->lights[pick].triangle];
-    float u1 = path_number(src, bounce, SLOT_LIGHT_U);
-    float u2 = path_number(src, bounce, SLOT_LIGHT_V);
+    float u1 = smp_number(src, bounce, SLOT_LIGHT_U);
+    float u2 = smp_number(src, bounce, SLOT_LIGHT_V);
     LightSample ls;
     if (!light_sample_tri(lt, sc->mats, x, u1, u2, &ls)) return (float3)(0.0f);
     float cos_x = dot(n_wo, ls.wi);
@@ -71,36 +65,11 @@ float3 path_next_event(const SceneView* sc, SampleSource* src, uint bounce, floa
     Hit h;
     ++*rays;
     if (bvh_trace(sc->nodes, sc->tris, &shadow, &h, true)) return (float3)(0.0f);
-    float bsdf_pdf_w = cos_x * M_1_PI_F;
-    float w = light_power_heuristic(ls.pdf_w, bsdf_pdf_w);
-    float3 f = path_rgb(m->kd) * M_1_PI_F;
+    float w = light_power_heuristic(ls.pdf_w, shading_pdf_w(m, wo, ls.wi, n_wo));
+    float3 f = shading_eval(m, wo, ls.wi, n_wo);
     return ls.radiance * f * (cos_x * w / ls.pdf_w);
 #else
     return (float3)(0.0f);
-#endif
-}
-
-/* Scatters at a surface vertex; returns the sampled direction and weight. */
-BsdfSample path_scatter(SampleSource* src, uint bounce, const Material* m, float3 wo, float3 n,
-                        float3 n_wo) {
-#if LAYOUT_HAS_DIELECTRIC
-    if (m->type == MAT_DIELECTRIC)
-        return bsdf_sample_dielectric(m, wo, n, path_number(src, bounce, SLOT_FRESNEL),
-                                      SLOT_FRESNEL_BITS);
-#endif
-#if LAYOUT_HAS_MIRROR
-    if (m->type == MAT_MIRROR) return bsdf_sample_mirror(m, wo, n_wo);
-#endif
-#if LAYOUT_HAS_DIFFUSE
-    float u1 = path_number(src, bounce, SLOT_BSDF_U);
-    float u2 = path_number(src, bounce, SLOT_BSDF_V);
-    return bsdf_sample_diffuse(m, n_wo, u1, u2);
-#else
-    BsdfSample none;
-    none.weight = (float3)(0.0f);
-    none.pdf_w = 0.0f;
-    none.wi = n_wo;
-    return none;
 #endif
 }
 
@@ -124,7 +93,7 @@ inline bool path_survives(SampleSource* src, uint bounce, float3* beta) {
     float p = fmin(RR_CAP, m * (1.0f / RR_THRESHOLD));
     if (p >= 1.0f) return true;
     float q = layout_quantize_prob(p, SLOT_RR_BITS);
-    if (path_number(src, bounce, SLOT_RR) >= q) return false;
+    if (smp_number(src, bounce, SLOT_RR) >= q) return false;
     *beta /= q;
 #endif
     return true;
@@ -172,10 +141,10 @@ PathResult path_trace(const SceneView* sc, SampleSource* src, Ray ray) {
         res.bounces = bounce + 1u;
         float3 x = ray.o + ray.d * hit.t;
         float3 n_wo = cos_o >= 0.0f ? n : -n;
-        if (m.type == MAT_DIFFUSE)
+        if (shading_has_nee(&m))
             path_add(&res, bounce + 1u,
-                     beta * path_next_event(sc, src, bounce, x, n_wo, &m, &res.rays));
-        BsdfSample bs = path_scatter(src, bounce, &m, wo, n, n_wo);
+                     beta * path_next_event(sc, src, bounce, x, wo, n_wo, &m, &res.rays));
+        BsdfSample bs = shading_sample(src, bounce, &m, wo, n, n_wo);
         beta *= bs.weight;
         prev_pdf_w = bs.pdf_w;
         if (!(path_max3(beta) > 0.0f) || !path_survives(src, bounce, &beta)) break;

@@ -1,6 +1,6 @@
 /* The MLT film on the device. A splat may land on any pixel, so every band
  * of the film is bound at once: up to FILM_MAX_BANDS buffers, each within
- * the device's largest allocation (FilmShape in cl/shared_types.h). Words
+ * the device's largest allocation (FilmShape in cl/core/shared_types.h). Words
  * are 32-bit fixed point added by 32-bit atomics (core OpenCL 1.1); the host
  * drains them into its 64-bit film before any word could overflow
  * (src/render/mlt_film.hpp states and proves the bound). Values are rounded

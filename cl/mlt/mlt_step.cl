@@ -1,6 +1,6 @@
 /* The parts of one Metropolis step of primary-sample-space MLT (Kelemen et
  * al. 2002) in the split-transition form of Frolov and Galaktionov (section
- * 3.3, Algorithm 1); cl/kernels_mlt.cl composes them. The target is
+ * 3.3, Algorithm 1); cl/kernels/mlt.cl composes them. The target is
  * I(x) = lum(F(x)) w(x), w the weight of x's pixel's cell (MltTarget; 1
  * everywhere but for the two-stage target, src/render/target.hpp). A chain
  * keeps G(x) = F(x) w(x), so that I(x) = lum(G(x)). Splats use expected
@@ -15,7 +15,7 @@
  * mutation (src/render/mlt_film.hpp). x's
  * stay weights are gathered in its ChainValue and splatted once, when the
  * chain moves away (MLT_EAGER_STAY, the reference build, splats them at
- * every step). Splats go to the film through 32-bit atomics (cl/film.cl);
+ * every step). Splats go to the film through 32-bit atomics (cl/mlt/film.cl);
  * the step's counters are summed per work-group in local memory and added
  * to the group's own row of stats, so the only global atomics are the
  * film's. */

@@ -1,7 +1,7 @@
 /* Film positions of the burn-in's OMC samples (Frolov and Galaktionov,
  * section 3.1): not uniform random, as a large step's, but the first Sobol
  * samples of each pixel's sequence in the OMC part's path tracer (sobol.cl),
- * spread over the pixels by BurnInFilm (cl/shared_types.h). The pixels get
+ * spread over the pixels by BurnInFilm (cl/core/shared_types.h). The pixels get
  * equal numbers of samples, give or take one, and the OMC part goes on with
  * each pixel's sequence after them, so the burn-in's paths add to the split's
  * OMC part as path-traced samples do (src/render/burn_in.hpp). The random
