@@ -11,6 +11,7 @@
 
 #include <cstdio>
 #include <functional>
+#include <stdexcept>
 
 using namespace smallmlt;
 
@@ -66,6 +67,38 @@ TEST(OpenCl, RefusedLaunchNamesKernelAndSizes) {
     EXPECT_TRUE(msg.find("CL_INVALID_WORK_GROUP_SIZE") != std::string::npos ||
                 msg.find("CL_INVALID_WORK_ITEM_SIZE") != std::string::npos)
         << msg;
+}
+
+// A kernel's arguments are set all at once: too few or too many is an
+// error naming the kernel, and a unit sets all of its arguments.
+TEST(OpenCl, EveryArgumentOfAKernelIsSet) {
+    DeviceScene ds = prepare_scene(test::scene("cornell", 8, 8, 2));
+    auto error_of = [](const std::function<void()>& f) -> std::string {
+        try {
+            f();
+        } catch (const std::exception& e) {
+            return e.what();
+        }
+        return "";
+    };
+    ClProgram program(test::cl().build(pt_program_files(PtSampler::Sobol), ds.layout.defines()));
+    ClKernel k(program.p, "pt_render");
+    SceneBuffers scene(test::cl(), ds);
+    ClBuffer accum(test::cl(), CL_MEM_READ_WRITE, 64 * 3 * sizeof(float));
+    std::string few = error_of([&] { k.set_args(scene, cl_ulong(1)); });
+    EXPECT_NE(few.find("kernel pt_render takes 14 arguments, 6 were set"), std::string::npos)
+        << few;
+    std::string many = error_of([&] {
+        k.set_args(scene, cl_ulong(1), cl_uint(0), cl_uint(1), cl_uint(0), cl_uint(1), cl_uint(0),
+                   cl_uint(64), accum, accum, cl_uint(0));
+    });
+    // (the driver may refuse the extra argument's index first)
+    EXPECT_NE(many.find("pt_render"), std::string::npos) << many;
+    EXPECT_EQ(error_of([&] {
+                  k.set_args(scene, cl_ulong(1), cl_uint(0), cl_uint(1), cl_uint(0), cl_uint(1),
+                             cl_uint(0), cl_uint(64), accum, accum);
+              }),
+              "");
 }
 
 // MLT needs 64-bit atomics only for the 64-bit reference film.

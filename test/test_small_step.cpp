@@ -234,8 +234,7 @@ TEST(SmallStep, LazyPathEqualsCommittedPath) {
                      std::size_t(opt.threads) * 3 * sizeof(cl_float4));
         SceneBuffers sb(test::cl(), *ds);
         ClKernel k(mlt.program(), "probe_lazy_eager");
-        k.set_args(sb.tris, sb.nodes, sb.mats, sb.lights, ds->frame, mlt.state(), mlt.values(),
-                   eager, cl_uint(opt.threads), cl_ulong(101), out);
+        k.set_args(sb, mlt.state(), mlt.values(), eager, cl_uint(opt.threads), cl_ulong(101), out);
         k.run(test::cl(), opt.threads);
         std::vector<cl_float4> f(std::size_t(opt.threads) * 3);
         out.read(test::cl(), f.data());

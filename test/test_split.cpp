@@ -29,8 +29,7 @@ Parts trace_parts(const DeviceScene& ds, Split s, std::uint32_t n, std::uint64_t
     SceneBuffers scene(test::cl(), ds);
     ClBuffer omc(test::cl(), CL_MEM_WRITE_ONLY, n * sizeof(cl_float4));
     ClBuffer rest(test::cl(), CL_MEM_WRITE_ONLY, n * sizeof(cl_float4));
-    k.set_args(scene.tris, scene.nodes, scene.mats, scene.lights, ds.frame, cl_ulong(seed),
-               cl_uint(n), omc, rest);
+    k.set_args(scene, cl_ulong(seed), cl_uint(n), omc, rest);
     k.run(test::cl(), n);
     Parts p{std::vector<cl_float4>(n), std::vector<cl_float4>(n)};
     omc.read(test::cl(), p.omc.data());

@@ -95,8 +95,7 @@ inline std::vector<cl_float4> lazy_eager_committed(const MltRenderer& mlt, const
     ClBuffer out(cl(), CL_MEM_WRITE_ONLY, std::size_t(chains) * 3 * sizeof(cl_float4));
     SceneBuffers sb(cl(), ds);
     ClKernel k(mlt.program(), "probe_lazy_eager");
-    k.set_args(sb.tris, sb.nodes, sb.mats, sb.lights, ds.frame, mlt.state(), mlt.values(), eager,
-               cl_uint(chains), cl_ulong(99), out);
+    k.set_args(sb, mlt.state(), mlt.values(), eager, cl_uint(chains), cl_ulong(99), out);
     k.run(cl(), chains);
     std::vector<cl_float4> f(std::size_t(chains) * 3);
     out.read(cl(), f.data());

@@ -145,6 +145,18 @@ typedef struct {
 } BurnInFilm;
 
 #define FILM_MAX_BANDS 4
+
+/* Kernel arguments that travel as units, declared once for the host and
+ * the kernels (X-macros: each entry is X(element type, name)).
+ * SCENE_BUFFERS: the scene's read-only buffers, named as DeviceScene's
+ * members; a kernel takes them, then the Frame, as SCENE_ARGS
+ * (cl/path/path.cl), and the host binds them as one SceneBuffers
+ * (src/device/scene_buffers.hpp). FILM_BANDS: the MLT film's bands, one per
+ * FILM_MAX_BANDS, then its FilmShape: FILM_ARGS (cl/mlt/film.cl), bound as
+ * one MltFilm (src/render/mlt_film.hpp). */
+#define SCENE_BUFFERS(X)                                                                           \
+    X(Triangle, tris) X(BvhNode, nodes) X(Material, materials) X(LightEntry, lights)
+#define FILM_BANDS(X) X(FilmWord, band0) X(FilmWord, band1) X(FilmWord, band2) X(FilmWord, band3)
 #define FILM64_FRAC_BITS 24
 
 /* Counters of an MLT render, 64-bit each, in this order. Each work-group of

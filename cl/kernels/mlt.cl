@@ -14,18 +14,16 @@
  * (src/render/split.hpp) and weigh the two-stage target's cells
  * (src/render/target.hpp). The host adds them in sample order: no atomics,
  * and the same sums every time. */
-__kernel void mlt_luminance(__global const Triangle* tris, __global const BvhNode* nodes,
-                            __global const Material* mats, __global const LightEntry* lights,
-                            const Frame frame, __global const float* weight,
-                            const TargetCells cells, const BurnInFilm film, __global uint* state,
-                            const ulong seed, const uint round, const uint count,
-                            __global float* lum, __global float4* omc, __global ulong* stats) {
+__kernel void mlt_luminance(SCENE_ARGS, __global const float* weight, const TargetCells cells,
+                            const BurnInFilm film, __global uint* state, const ulong seed,
+                            const uint round, const uint count, __global float* lum,
+                            __global float4* omc, __global ulong* stats) {
     __local uint l_count[MLT_COUNTS];
     uint i = get_global_id(0), nonfinite = 0u;
     mlt_zero_counts(l_count);
     barrier(CLK_LOCAL_MEM_FENCE);
     if (i < count) {
-        SceneView sc = path_scene(tris, nodes, mats, lights, &frame);
+        SceneView sc = SCENE_VIEW();
         MltTarget target = mlt_target(weight, cells, &frame, 0.0f);
         uint2 at = burnin_film(&film, &frame, (ulong)round * film.per_round + i);
         SampleSource src = smp_chain_start(state, 0u, 1u, rng_key(seed, i, 0u), at);
@@ -43,9 +41,7 @@ __kernel void mlt_luminance(__global const Triangle* tris, __global const BvhNod
  * of key rng_key(round seed, i, 0) at its film position, as mlt_luminance
  * drew it, where the round seed is omc_round_seed(omc_seed, r)
  * (src/render/burn_in.cpp). */
-__kernel void mlt_init(__global const Triangle* tris, __global const BvhNode* nodes,
-                       __global const Material* mats, __global const LightEntry* lights,
-                       const Frame frame, __global const float* weight, const TargetCells cells,
+__kernel void mlt_init(SCENE_ARGS, __global const float* weight, const TargetCells cells,
                        const BurnInFilm film, __global uint* state, __global ChainValue* values,
                        const uint num_chains, const ulong omc_seed, __global const uint2* picks,
                        __global ulong* stats) {
@@ -54,7 +50,7 @@ __kernel void mlt_init(__global const Triangle* tris, __global const BvhNode* no
     mlt_zero_counts(l_count);
     barrier(CLK_LOCAL_MEM_FENCE);
     if (c < num_chains) {
-        SceneView sc = path_scene(tris, nodes, mats, lights, &frame);
+        SceneView sc = SCENE_VIEW();
         MltTarget target = mlt_target(weight, cells, &frame, 0.0f);
         uint2 pick = picks[c];
         ulong round_seed = rng_mix64(omc_seed * 0x9E3779B97F4A7C15UL + (ulong)pick.x);
@@ -82,23 +78,20 @@ __kernel void mlt_init(__global const Triangle* tris, __global const BvhNode* no
  * 3. the group's counters, with the luminance of its large steps (each an
  *    OMC sample of b's integrand), go to its row of stats; the picked
  *    work-item commits its proposal. */
-__kernel void mlt_step(__global const Triangle* tris, __global const BvhNode* nodes,
-                       __global const Material* mats, __global const LightEntry* lights,
-                       const Frame frame, __global const float* weight, const TargetCells cells,
+__kernel void mlt_step(SCENE_ARGS, __global const float* weight, const TargetCells cells,
                        __global uint* state, __global ChainValue* values, const uint num_threads,
                        const uint proposals, const ulong seed, const uint iteration,
-                       const uint large_threshold, const float kelemen_pb, __global FilmWord* film0,
-                       __global FilmWord* film1, __global FilmWord* film2, __global FilmWord* film3,
-                       const FilmShape film_shape, __global ulong* stats, const uint stuck_run) {
+                       const uint large_threshold, const float kelemen_pb, FILM_ARGS,
+                       __global ulong* stats, const uint stuck_run) {
     __local float l_a[MLT_GROUP];
     __local uint l_next[MLT_GROUP];
     __local uint l_count[MLT_COUNTS];
     __local ulong l_large_lum[MLT_GROUP];
     MltThread th = mlt_thread(num_threads, proposals);
     uint c = th.active ? th.chain : 0u;
-    SceneView sc = path_scene(tris, nodes, mats, lights, &frame);
+    SceneView sc = SCENE_VIEW();
     MltTarget target = mlt_target(weight, cells, &frame, kelemen_pb);
-    Film film = film_bind(film0, film1, film2, film3, film_shape);
+    Film film = FILM_VIEW();
     ChainValue x = values[c];
     ulong key = rng_key(seed, th.t, iteration);
     bool large = mlt_is_large(key, large_threshold);
@@ -145,12 +138,10 @@ __kernel void mlt_step(__global const Triangle* tris, __global const BvhNode* no
 __kernel void mlt_owed(const Frame frame, __global const float* weight, const TargetCells cells,
                        const float kelemen_pb, __global const uint* state,
                        __global ChainValue* values, const uint num_chains, const ulong seed,
-                       const uint iteration, __global FilmWord* film0, __global FilmWord* film1,
-                       __global FilmWord* film2, __global FilmWord* film3,
-                       const FilmShape film_shape, const uint mode) {
+                       const uint iteration, FILM_ARGS, const uint mode) {
     uint c = get_global_id(0);
     if (c >= num_chains) return;
-    Film film = film_bind(film0, film1, film2, film3, film_shape);
+    Film film = FILM_VIEW();
     MltTarget target = mlt_target(weight, cells, &frame, kelemen_pb);
     ChainValue x = values[c];
     if (!x.stay) return;

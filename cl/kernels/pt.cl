@@ -20,18 +20,16 @@
 #define PT_VALUE(r) path_radiance(&(r))
 #endif
 
-__kernel void pt_render(__global const Triangle* tris, __global const BvhNode* nodes,
-                        __global const Material* mats, __global const LightEntry* lights,
-                        const Frame frame, const ulong seed, const uint first_sample,
-                        const uint spp, const uint offset, const uint stride, const uint first,
-                        const uint count, __global float* accum, __global ulong* stats) {
+__kernel void pt_render(SCENE_ARGS, const ulong seed, const uint first_sample, const uint spp,
+                        const uint offset, const uint stride, const uint first, const uint count,
+                        __global float* accum, __global ulong* stats) {
     __local uint l_rays, l_nonfinite;
     if (get_local_id(0) == 0u) l_rays = l_nonfinite = 0u;
     barrier(CLK_LOCAL_MEM_FENCE);
     uint i = get_global_id(0);
     if (i < count) {
         uint pixel = first + i;
-        SceneView sc = path_scene(tris, nodes, mats, lights, &frame);
+        SceneView sc = SCENE_VIEW();
         sc.depth = PT_DEPTH(sc.depth);
         float px = (float)(pixel % frame.width), py = (float)(pixel / frame.width);
         float3 acc = vload3(i, accum);

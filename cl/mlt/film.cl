@@ -17,16 +17,23 @@ typedef ulong FilmWord;
 typedef uint FilmWord;
 #endif
 
+#define FILM_MEMBER(T, name) __global T* name;
+#define FILM_PARAM(T, name) __global T *name,
+#define FILM_NAME(T, name) name,
+
 typedef struct {
-    __global FilmWord *band0, *band1, *band2, *band3;
+    FILM_BANDS(FILM_MEMBER)
     FilmShape shape;
 } Film;
 
-inline Film film_bind(__global FilmWord* band0, __global FilmWord* band1, __global FilmWord* band2,
-                      __global FilmWord* band3, FilmShape shape) {
-    Film film = {band0, band1, band2, band3, shape};
-    return film;
-}
+/* The film as a kernel's parameters (FILM_BANDS, then the shape), and the
+ * Film of a kernel that took them. */
+#define FILM_ARGS FILM_BANDS(FILM_PARAM) const FilmShape film_shape
+#define FILM_VIEW() ((Film){FILM_BANDS(FILM_NAME) film_shape})
+
+#if FILM_MAX_BANDS != 4
+#error "film_words picks among 4 bands: extend it with FILM_BANDS"
+#endif
 
 /* The three words of a pixel. */
 inline __global FilmWord* film_words(const Film* film, uint pixel) {

@@ -162,14 +162,21 @@ inline bool path_finite(float3 c) {
 }
 
 inline SceneView path_scene(const __global Triangle* tris, const __global BvhNode* nodes,
-                            const __global Material* mats, const __global LightEntry* lights,
+                            const __global Material* materials, const __global LightEntry* lights,
                             const Frame* frame) {
     SceneView sc;
     sc.tris = tris;
     sc.nodes = nodes;
-    sc.mats = mats;
+    sc.mats = materials;
     sc.lights = lights;
     sc.num_lights = frame->num_lights;
     sc.depth = frame->depth;
     return sc;
 }
+
+/* The scene as a kernel's parameters (SCENE_BUFFERS, then the frame), and
+ * the SceneView of a kernel that took them. */
+#define PATH_SCENE_PARAM(T, name) __global const T *name,
+#define PATH_SCENE_NAME(T, name) name,
+#define SCENE_ARGS SCENE_BUFFERS(PATH_SCENE_PARAM) const Frame frame
+#define SCENE_VIEW() path_scene(SCENE_BUFFERS(PATH_SCENE_NAME) & frame)

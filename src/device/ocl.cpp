@@ -7,6 +7,7 @@
 #include <cctype>
 #include <cstdlib>
 #include <sstream>
+#include <stdexcept>
 
 namespace smallmlt {
 
@@ -315,13 +316,20 @@ ClKernel::ClKernel(cl_program program, const char* name) : name_(name) {
     k_ = clCreateKernel(program, name, &err);
     if (err != CL_SUCCESS)
         throw InputError(std::string("clCreateKernel(") + name + ") failed: " + cl_error_name(err));
+    CL_CHECK(clGetKernelInfo(k_, CL_KERNEL_NUM_ARGS, sizeof(num_args_), &num_args_, nullptr));
 }
 
 ClKernel::~ClKernel() {
     if (k_) clReleaseKernel(k_);
 }
 
-void ClKernel::set_one(cl_uint i, const ClBuffer& b) {
+void ClKernel::check_arg_count(cl_uint set) const {
+    if (set != num_args_)
+        throw std::logic_error("kernel " + name_ + " takes " + std::to_string(num_args_) +
+                               " arguments, " + std::to_string(set) + " were set");
+}
+
+void ClKernel::set_arg(cl_uint i, const ClBuffer& b) {
     cl_mem m = b.get();
     set_raw(i, sizeof(cl_mem), &m);
 }

@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 namespace smallmlt {
@@ -128,9 +129,19 @@ class ClKernel {
     ClKernel(const ClKernel&) = delete;
     ClKernel& operator=(const ClKernel&) = delete;
 
+    // Sets every argument of the kernel in order: a buffer or a value per
+    // argument, or a unit that sets several (an overload of kernel_arg:
+    // SceneBuffers, MltFilm). Throws std::logic_error naming the kernel if
+    // the arguments set are not as many as it takes.
     template <typename... Args> void set_args(const Args&... args) {
         cl_uint i = 0;
-        (set_one(i++, args), ...);
+        (kernel_arg(*this, i, args), ...);
+        check_arg_count(i);
+    }
+    void set_arg(cl_uint i, const ClBuffer& b);
+    template <typename T> void set_arg(cl_uint i, const T& v) {
+        static_assert(std::is_trivially_copyable_v<T>, "a kernel argument is plain data");
+        set_raw(i, sizeof(T), &v);
     }
     // Runs over `items` work-items (rounded up to whole work-groups of
     // `local`) and waits for it to finish.
@@ -142,12 +153,18 @@ class ClKernel {
     const std::string& name() const { return name_; }
 
   private:
-    void set_one(cl_uint i, const ClBuffer& b);
-    template <typename T> void set_one(cl_uint i, const T& v) { set_raw(i, sizeof(T), &v); }
     void set_raw(cl_uint i, std::size_t bytes, const void* v);
+    void check_arg_count(cl_uint set) const;
     cl_kernel k_ = nullptr;
+    cl_uint num_args_ = 0;
     std::string name_;
 };
+
+// Sets argument i of k to v and moves i past it; units of several arguments
+// overload this.
+template <typename T> void kernel_arg(ClKernel& k, cl_uint& i, const T& v) {
+    k.set_arg(i++, v);
+}
 
 // Releases a program on destruction.
 struct ClProgram {

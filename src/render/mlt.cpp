@@ -129,9 +129,9 @@ void MltRenderer::sample_starts(RankGroup& ranks) {
     cl_ulong pick_seed = derive_seed(opt_.seed, kPurposePick);
     for (std::uint32_t it = 0; it < iters; ++it) {
         if (it == first && first > 0) fix_target(ranks);
-        k_lum_.set_args(scene_.tris, scene_.nodes, scene_.mats, scene_.lights, ds_.frame, weight_,
-                        cells_, burn_in_film_, state_, cl_ulong(omc_round_seed(omc_seed, it)),
-                        cl_uint(it), cl_uint(m), lum, samples ? omc : lum, stats_);
+        k_lum_.set_args(scene_, weight_, cells_, burn_in_film_, state_,
+                        cl_ulong(omc_round_seed(omc_seed, it)), cl_uint(it), cl_uint(m), lum,
+                        samples ? omc : lum, stats_);
         k_lum_.run(cl_, m);
         lum.read(cl_, host.data());
         if (samples) {
@@ -239,9 +239,8 @@ std::unique_ptr<PathTracer> MltRenderer::make_omc_part(Split split) const {
 
 void MltRenderer::init_chains() {
     cl_ulong omc_seed = derive_seed(opt_.seed, kPurposeOmc);
-    k_init_.set_args(scene_.tris, scene_.nodes, scene_.mats, scene_.lights, ds_.frame, weight_,
-                     cells_, burn_in_film_, state_, values_, cl_uint(chains()), omc_seed, picks_,
-                     stats_);
+    k_init_.set_args(scene_, weight_, cells_, burn_in_film_, state_, values_, cl_uint(chains()),
+                     omc_seed, picks_, stats_);
     k_init_.enqueue(cl_, chains());
     cl_.finish("kernel mlt_init over " + std::to_string(chains()) + " chains");
 }
@@ -249,8 +248,7 @@ void MltRenderer::init_chains() {
 void MltRenderer::owed(std::uint32_t mode) const {
     k_owed_.set_args(ds_.frame, weight_, cells_, cl_float(kelemen_pb_), state_, values_,
                      cl_uint(chains()), cl_ulong(derive_seed(opt_.seed, kPurposeStep)),
-                     cl_uint(iterations_), film_.band(0), film_.band(1), film_.band(2),
-                     film_.band(3), film_.plan().shape, cl_uint(mode));
+                     cl_uint(iterations_), film_, cl_uint(mode));
     k_owed_.enqueue(cl_, chains());
 }
 
@@ -266,11 +264,9 @@ void MltRenderer::step(std::uint32_t n) {
         cl_uint iteration = ++iterations_;
         if (chains) {
             ++steps_run_;
-            k_step_.set_args(scene_.tris, scene_.nodes, scene_.mats, scene_.lights, ds_.frame,
-                             weight_, cells_, state_, values_, cl_uint(opt_.threads),
+            k_step_.set_args(scene_, weight_, cells_, state_, values_, cl_uint(opt_.threads),
                              cl_uint(opt_.proposals), seed, iteration, threshold,
-                             cl_float(kelemen_pb_), film_.band(0), film_.band(1), film_.band(2),
-                             film_.band(3), film_.plan().shape, stats_, cl_uint(opt_.stuck_run));
+                             cl_float(kelemen_pb_), film_, stats_, cl_uint(opt_.stuck_run));
             k_step_.enqueue(cl_, opt_.threads);
             // The pass ends: every chain splats what it owes, and the film's
             // words go to the host before the next pass could overflow them.

@@ -76,4 +76,17 @@ class MltFilm {
     std::uint64_t peak_ = 0;
 };
 
+// Binds the film as FILM_ARGS (cl/mlt/film.cl): FILM_MAX_BANDS bands
+// (band 0 in place of those it does not have), then its shape.
+#define SMALLMLT_FILM_COUNT(T, name) +1
+static_assert(0 FILM_BANDS(SMALLMLT_FILM_COUNT) == FILM_MAX_BANDS, "a parameter per film band");
+#undef SMALLMLT_FILM_COUNT
+inline void kernel_arg(ClKernel& k, cl_uint& i, const MltFilm& film) {
+    std::uint32_t b = 0;
+#define SMALLMLT_FILM_BIND(T, name) k.set_arg(i++, film.band(b++));
+    FILM_BANDS(SMALLMLT_FILM_BIND)
+#undef SMALLMLT_FILM_BIND
+    k.set_arg(i++, film.plan().shape);
+}
+
 } // namespace smallmlt

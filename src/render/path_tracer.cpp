@@ -75,9 +75,8 @@ void PathTracer::launch(std::uint32_t n) {
         std::uint64_t size = std::min(band_pixels_, pixels() - first);
         const ClBuffer& band = bands_[scratch ? 0 : b];
         if (scratch) band.fill_zero(cl_);
-        kernel_.set_args(scene_.tris, scene_.nodes, scene_.mats, scene_.lights, ds_.frame, seed,
-                         first_sample, count, cl_uint(sample_offset_), cl_uint(sample_stride_),
-                         cl_uint(first), cl_uint(size), band, stats_);
+        kernel_.set_args(scene_, seed, first_sample, count, cl_uint(sample_offset_),
+                         cl_uint(sample_stride_), cl_uint(first), cl_uint(size), band, stats_);
         kernel_.enqueue(cl_, size);
         if (!scratch) continue;
         band.read(cl_, sums.data());

@@ -38,14 +38,12 @@ __kernel void probe_pss_roundtrip(__global uint* state, __global const uint* val
  * proposal materialized number by number into `eager` and replayed;
  * out[3c + 2] = F of the chain's state after committing the proposal,
  * replayed. */
-__kernel void probe_lazy_eager(__global const Triangle* tris, __global const BvhNode* nodes,
-                               __global const Material* mats, __global const LightEntry* lights,
-                               const Frame frame, __global uint* state,
-                               __global const ChainValue* values, __global uint* eager,
-                               const uint num_chains, const ulong seed, __global float4* out) {
+__kernel void probe_lazy_eager(SCENE_ARGS, __global uint* state, __global const ChainValue* values,
+                               __global uint* eager, const uint num_chains, const ulong seed,
+                               __global float4* out) {
     uint c = get_global_id(0);
     if (c >= num_chains) return;
-    SceneView sc = path_scene(tris, nodes, mats, lights, &frame);
+    SceneView sc = SCENE_VIEW();
     uint mode = (c & 1u) ? SMP_LARGE : SMP_SMALL;
     SampleSource lazy = smp_chain(state, c, num_chains, rng_key(seed, c, 1u), mode,
                                   values[c].meta & CHAIN_BOUNCES_MASK);
