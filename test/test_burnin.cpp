@@ -100,8 +100,9 @@ namespace {
 // The burn-in's program: rng, the 64-bit scan and the picks.
 cl_program build_burnin() {
     const ClContext& cl = test::cl();
-    return cl.build({"cl/core/rng.cl", "cl/core/scan.cl", "cl/mlt/burnin.cl"},
-                    scan_defines(cl.device()));
+    return cl.build(
+        {"cl/core/shared_types.h", "cl/core/rng.h", "cl/core/scan.cl", "cl/mlt/burnin.cl"},
+        scan_defines(cl.device()));
 }
 
 // Picks `count` indices from luminances w as the burn-in's first round does

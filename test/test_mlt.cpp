@@ -356,8 +356,9 @@ TEST(MltStaySplat, GatheredStaysEqualEagerSplatsWithinRounding) {
         double per[2] = {double(stats[0].atomics) / double(stats[0].mutations),
                          double(stats[1].atomics) / double(stats[1].mutations)};
         std::printf("%s, K = %u: largest relative difference %.3g; global atomics per mutation "
-                    "%.2f (gathered) against %.2f (every step); longest run %u\n",
-                    name, c.proposals, worst, per[0], per[1], stats[0].longest_run);
+                    "%.2f (gathered) against %.2f (every step); longest run %llu\n",
+                    name, c.proposals, worst, per[0], per[1],
+                    static_cast<unsigned long long>(stats[0].longest_run));
         EXPECT_LT(worst, 1e-5);
         EXPECT_LT(per[0], per[1]);
         EXPECT_EQ(stats[0].accepted, stats[1].accepted) << "the chains took other paths";

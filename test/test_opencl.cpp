@@ -31,7 +31,7 @@ std::string error_of(const std::function<void()>& f) {
 TEST(OpenCl, BuildFailurePrintsTheLogWithFileAndLine) {
     // A define that breaks the shared header: the log must point into it.
     std::string msg = error_of([] {
-        test::cl().build({"cl/core/shared_types.h", "cl/core/rng.cl"}, "#define u32 @\n");
+        test::cl().build({"cl/core/shared_types.h", "cl/core/rng.h"}, "#define u32 @\n");
     });
     EXPECT_NE(msg.find("kernel build failed (CL_BUILD_PROGRAM_FAILURE)"), std::string::npos) << msg;
     EXPECT_NE(msg.find("cl/core/shared_types.h:"), std::string::npos) << msg;
@@ -40,11 +40,11 @@ TEST(OpenCl, BuildFailurePrintsTheLogWithFileAndLine) {
 // Compilers that ignore #line (NVIDIA's names every line "<kernel>:N") get
 // their line numbers mapped back to the embedded file and its own line.
 TEST(OpenCl, AnonymousLogLinesNameTheEmbeddedFile) {
-    std::vector<SourceStart> starts = {{"cl/core/shared_types.h", 4}, {"cl/core/rng.cl", 120}};
+    std::vector<SourceStart> starts = {{"cl/core/shared_types.h", 4}, {"cl/core/rng.h", 120}};
     EXPECT_EQ(cl_name_log_lines("<kernel>:83:5: error: x\n<kernel>:121:2: note\n<kernel>:2:1: w "
                                 "<kernel>:zz <kernel>:7",
                                 starts),
-              "cl/core/shared_types.h:80:5: error: x\ncl/core/rng.cl:2:2: note\n(defines):2:1: w "
+              "cl/core/shared_types.h:80:5: error: x\ncl/core/rng.h:2:2: note\n(defines):2:1: w "
               "<kernel>:zz <kernel>:7");
 }
 

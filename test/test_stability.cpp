@@ -101,8 +101,9 @@ TEST(StuckChains, AreCountedWhereABrightCausticHoldsThem) {
         mlt.prepare();
         mlt.step(600);
         MltStats s = mlt.stats();
-        std::printf("%s: %llu stuck chains, longest run %u\n", name,
-                    static_cast<unsigned long long>(s.stuck), s.longest_run);
+        std::printf("%s: %llu stuck chains, longest run %llu\n", name,
+                    static_cast<unsigned long long>(s.stuck),
+                    static_cast<unsigned long long>(s.longest_run));
         if (std::string(name) == "cornell") {
             EXPECT_EQ(s.stuck, 0u);
             EXPECT_LT(s.longest_run, opt.stuck_run);
@@ -144,9 +145,10 @@ TEST(StuckChains, EveryChainThatBecameStuckIsCountedOnce) {
     std::uint64_t marked = 0;
     for (const ChainValue& v : chain_values(mlt))
         marked += (v.meta & CHAIN_STUCK_BIT) != 0;
-    std::printf("%llu chains marked stuck, %llu counted, longest run %u\n",
+    std::printf("%llu chains marked stuck, %llu counted, longest run %llu\n",
                 static_cast<unsigned long long>(marked),
-                static_cast<unsigned long long>(mlt.stats().stuck), mlt.stats().longest_run);
+                static_cast<unsigned long long>(mlt.stats().stuck),
+                static_cast<unsigned long long>(mlt.stats().longest_run));
     EXPECT_GT(marked, 0u) << "no chain stayed 20 steps: the test needs one";
     EXPECT_EQ(mlt.stats().stuck, marked);
 }

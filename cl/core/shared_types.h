@@ -8,10 +8,12 @@
 
 #ifdef __OPENCL_VERSION__
 typedef uint u32;
+typedef ulong u64;
 typedef float f32;
 #else
 #include <cstdint>
 typedef std::uint32_t u32;
+typedef std::uint64_t u64;
 typedef float f32;
 #endif
 
@@ -159,19 +161,28 @@ typedef struct {
 #define FILM_BANDS(X) X(FilmWord, band0) X(FilmWord, band1) X(FilmWord, band2) X(FilmWord, band3)
 #define FILM64_FRAC_BITS 24
 
-/* Counters of an MLT render, 64-bit each, in this order. Each work-group of
- * MLT_GROUP work-items owns one row of MLT_STAT_COUNT of them and adds to it
- * with plain arithmetic (no 64-bit atomics); the host sums the rows (and
- * takes the largest MLT_STAT_LONGEST). */
-#define MLT_STAT_ACCEPTED 0
-#define MLT_STAT_LARGE 1
-#define MLT_STAT_NONFINITE 2
-#define MLT_STAT_RAYS 3
-#define MLT_STAT_STUCK 4     /* chains that have been stuck */
-#define MLT_STAT_ATOMICS 5   /* atomic operations on global memory by the steps */
-#define MLT_STAT_LARGE_LUM 6 /* sum of I(y) over large steps, MLT_B_FRAC_BITS fixed point */
-#define MLT_STAT_LONGEST 7   /* longest run of rejections of a chain */
-#define MLT_STAT_COUNT 8
+/* Counters of an MLT render: X(NAME, member, JOIN), one list for the
+ * kernels (cl/mlt/mlt_step.cl) and the host (MltStats,
+ * src/render/mlt_stats.hpp). A work-group counts in local memory, 32-bit
+ * (MLT_COUNTS of them), and each step joins that into its own row of stats,
+ * MLT_STAT_COUNT 64-bit words, with plain arithmetic (no 64-bit atomics);
+ * the host joins the rows. JOIN is SUM or MAX. The row's last word,
+ * MLT_STAT_LARGE_LUM, is the sum of I(y) over large steps in MLT_B_FRAC_BITS
+ * fixed point, 64-bit from the start. */
+#define MLT_COUNTERS(X)                                                                            \
+    X(ACCEPTED, accepted, SUM)                                                                     \
+    X(LARGE, large, SUM)                                                                           \
+    X(NONFINITE, nonfinite, SUM) /* samples dropped as not finite */                               \
+    X(RAYS, rays, SUM)                                                                             \
+    X(STUCK, stuck, SUM)         /* chains that rejected stuck_run proposals in a row */           \
+    X(ATOMICS, atomics, SUM)     /* atomic operations on global memory by the steps */             \
+    X(LONGEST, longest_run, MAX) /* most consecutive rejections of any chain */
+
+#define MLT_STAT_INDEX(NAME, member, JOIN) MLT_STAT_##NAME,
+enum { MLT_COUNTERS(MLT_STAT_INDEX) MLT_COUNTS };
+#undef MLT_STAT_INDEX
+#define MLT_STAT_LARGE_LUM MLT_COUNTS
+#define MLT_STAT_COUNT (MLT_COUNTS + 1)
 
 /* Counters of a path-traced render, per work-group of the pixels as above. */
 #define PT_STAT_RAYS 0

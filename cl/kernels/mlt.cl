@@ -38,9 +38,8 @@ __kernel void mlt_luminance(SCENE_ARGS, __global const float* weight, const Targ
 }
 
 /* Starts chain c at burn-in sample picks[c] = (round r, index i): the path
- * of key rng_key(round seed, i, 0) at its film position, as mlt_luminance
- * drew it, where the round seed is omc_round_seed(omc_seed, r)
- * (src/render/burn_in.cpp). */
+ * of key rng_key(rng_round_seed(omc_seed, r), i, 0) at its film position, as mlt_luminance
+ * drew it. */
 __kernel void mlt_init(SCENE_ARGS, __global const float* weight, const TargetCells cells,
                        const BurnInFilm film, __global uint* state, __global ChainValue* values,
                        const uint num_chains, const ulong omc_seed, __global const uint2* picks,
@@ -53,7 +52,7 @@ __kernel void mlt_init(SCENE_ARGS, __global const float* weight, const TargetCel
         SceneView sc = SCENE_VIEW();
         MltTarget target = mlt_target(weight, cells, &frame, 0.0f);
         uint2 pick = picks[c];
-        ulong round_seed = rng_mix64(omc_seed * 0x9E3779B97F4A7C15UL + (ulong)pick.x);
+        ulong round_seed = rng_round_seed(omc_seed, pick.x);
         uint2 at = burnin_film(&film, &frame, (ulong)pick.x * film.per_round + pick.y);
         SampleSource src =
             smp_chain_start(state, c, num_chains, rng_key(round_seed, pick.y, 0u), at);
@@ -116,7 +115,7 @@ __kernel void mlt_step(SCENE_ARGS, __global const float* weight, const TargetCel
         if (next == 0u)
             mlt_stay(&values[c], x, pending, stuck_run, l_count);
         else
-            atomic_inc(&l_count[MLT_COUNT_ACCEPTED]);
+            atomic_inc(&l_count[MLT_STAT_ACCEPTED]);
     }
     mlt_count(l_count, l_large_lum, th.active && large, y, nonfinite, atomics);
     barrier(CLK_LOCAL_MEM_FENCE);

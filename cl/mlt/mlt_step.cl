@@ -47,17 +47,6 @@ inline float mlt_weight(const MltTarget* t, uint pixel) {
     return t->weight[(y >> t->cells.shift) * t->cells.columns + (x >> t->cells.shift)];
 }
 
-/* A work-group's counters in local memory, added to its row of stats once
- * per step. */
-#define MLT_COUNT_RAYS 0
-#define MLT_COUNT_LARGE 1
-#define MLT_COUNT_ACCEPTED 2
-#define MLT_COUNT_ATOMICS 3
-#define MLT_COUNT_NONFINITE 4
-#define MLT_COUNT_STUCK 5
-#define MLT_COUNT_LONGEST 6 /* the longest run of rejections (a maximum) */
-#define MLT_COUNTS 7
-
 /* Numbers of a step's stream reserved for the step itself: the large-step
  * choice, the choice of the next state, and the rounding of the proposal's
  * splat (3), of the state's (3) and of what a chain owes at a read (3). */
@@ -110,14 +99,13 @@ inline void mlt_zero_counts(__local uint* count) {
 inline void mlt_publish(__global ulong* stats, __local const uint* count, ulong large_lum) {
     if (get_local_id(0) != 0u) return;
     __global ulong* row = stats + (size_t)get_group_id(0) * MLT_STAT_COUNT;
-    row[MLT_STAT_RAYS] += count[MLT_COUNT_RAYS];
-    row[MLT_STAT_LARGE] += count[MLT_COUNT_LARGE];
-    row[MLT_STAT_ACCEPTED] += count[MLT_COUNT_ACCEPTED];
-    row[MLT_STAT_ATOMICS] += count[MLT_COUNT_ATOMICS];
-    row[MLT_STAT_NONFINITE] += count[MLT_COUNT_NONFINITE];
-    row[MLT_STAT_STUCK] += count[MLT_COUNT_STUCK];
+#define MLT_JOIN_SUM(a, b) ((a) + (b))
+#define MLT_JOIN_MAX(a, b) max((a), (b))
+#define MLT_PUBLISH(NAME, member, JOIN)                                                            \
+    row[MLT_STAT_##NAME] = MLT_JOIN_##JOIN(row[MLT_STAT_##NAME], (ulong)count[MLT_STAT_##NAME]);
+    MLT_COUNTERS(MLT_PUBLISH)
+#undef MLT_PUBLISH
     row[MLT_STAT_LARGE_LUM] += large_lum;
-    row[MLT_STAT_LONGEST] = max(row[MLT_STAT_LONGEST], (ulong)count[MLT_COUNT_LONGEST]);
 }
 
 /* A step's proposal is large when its stream's number MLT_DIM_LARGE is below
@@ -215,14 +203,14 @@ inline uint mlt_settle_stay(const Frame* frame, const MltTarget* target, __globa
 
 /* The chain stays at x with `pending` weight gathered: its run of
  * rejections grows; a chain that becomes stuck is counted once
- * (MLT_COUNT_STUCK), and the group keeps its longest run. */
+ * (MLT_STAT_STUCK), and the group keeps its longest run. */
 inline void mlt_stay(__global ChainValue* value, ChainValue x, uint pending, uint stuck_run,
                      __local uint* count) {
     ChainValue v = chain_stayed(x, stuck_run);
-    if (chain_stuck(v) && !chain_stuck(x)) atomic_inc(&count[MLT_COUNT_STUCK]);
+    if (chain_stuck(v) && !chain_stuck(x)) atomic_inc(&count[MLT_STAT_STUCK]);
     value->meta = v.meta;
     value->stay = pending;
-    atomic_max(&count[MLT_COUNT_LONGEST], chain_run(v));
+    atomic_max(&count[MLT_STAT_LONGEST], chain_run(v));
 }
 
 /* The chain moves to the proposal y of this work-item: its numbers are
@@ -240,7 +228,7 @@ inline ulong mlt_b_sample(float lum) {
 /* For kernels that count only dropped samples: the work-item's `nonfinite`
  * joins the group's count, which goes to the group's row of stats. */
 inline void mlt_publish_nonfinite(__global ulong* stats, __local uint* count, uint nonfinite) {
-    if (nonfinite) atomic_add(&count[MLT_COUNT_NONFINITE], nonfinite);
+    if (nonfinite) atomic_add(&count[MLT_STAT_NONFINITE], nonfinite);
     barrier(CLK_LOCAL_MEM_FENCE);
     mlt_publish(stats, count, 0ul);
 }
@@ -250,11 +238,11 @@ inline void mlt_publish_nonfinite(__global ulong* stats, __local uint* count, ui
  * step's luminance (0 if small), which the group sums in a fixed order. */
 inline void mlt_count(__local uint* count, __local ulong* large_lum, bool large, EvalResult y,
                       uint nonfinite, uint atomics) {
-    atomic_add(&count[MLT_COUNT_RAYS], y.rays);
-    if (large) atomic_inc(&count[MLT_COUNT_LARGE]);
+    atomic_add(&count[MLT_STAT_RAYS], y.rays);
+    if (large) atomic_inc(&count[MLT_STAT_LARGE]);
     large_lum[get_local_id(0)] = large ? mlt_b_sample(path_luminance(y.f)) : 0ul;
-    if (nonfinite) atomic_add(&count[MLT_COUNT_NONFINITE], nonfinite);
-    if (atomics) atomic_add(&count[MLT_COUNT_ATOMICS], atomics);
+    if (nonfinite) atomic_add(&count[MLT_STAT_NONFINITE], nonfinite);
+    if (atomics) atomic_add(&count[MLT_STAT_ATOMICS], atomics);
 }
 
 /* After a barrier: the group's large-step luminances, summed in local order

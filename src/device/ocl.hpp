@@ -77,7 +77,7 @@ class ClContext {
     // Waits for all queued work; throws naming `what` if it failed.
     void finish(const std::string& what) const;
 
-    // Builds a program from embedded kernel files (names as "cl/core/rng.cl"),
+    // Builds a program from embedded kernel files (names as "cl/core/rng.h"),
     // joined in order, each preceded by a #line directive naming it, after
     // `defines`. A failed build throws with the compiler's log.
     cl_program build(const std::vector<std::string>& files, const std::string& defines) const;

@@ -10,17 +10,8 @@
 
 namespace smallmlt {
 
-namespace {
-
-// The kernels' rng_key (cl/core/rng.cl).
-std::uint64_t rng_key(std::uint64_t seed, std::uint32_t a, std::uint32_t b) {
-    return rng_mix64(seed + rng_mix64((std::uint64_t(a) << 32) | b));
-}
-
-} // namespace
-
 std::uint64_t omc_round_seed(std::uint64_t omc_seed, std::uint32_t round) {
-    return derive_seed(omc_seed, round);
+    return rng_round_seed(omc_seed, round);
 }
 
 std::uint64_t omc_sample_key(std::uint64_t omc_seed, std::uint32_t round, std::uint32_t index) {

@@ -15,7 +15,7 @@ namespace smallmlt {
 // OMC samples of a render are numbered by (round, index): round r < T of
 // burn-in (T = --burn-in-iters) draws indices 0..N-1, and the fresh starts of
 // --burn-in none are round T. Sample (r, i) is the path of key
-// rng_key(omc_round_seed(omc_seed, r), i, 0) (cl/core/rng.cl), so keys stay
+// rng_key(omc_round_seed(omc_seed, r), i, 0) (cl/core/rng.h), so keys stay
 // distinct however many rounds of however many threads run (a single 32-bit
 // number r * N + i would wrap at 2^32 and repeat samples), and mlt_init
 // regenerates a picked path from its round's seed and its index.
@@ -59,7 +59,7 @@ std::uint64_t burnin_replace_threshold(double s, double total, std::uint32_t rou
 // none had light).
 class BurnInPicker {
   public:
-    // For rounds of up to max_n samples; `program` holds cl/core/rng.cl,
+    // For rounds of up to max_n samples; `program` holds cl/core/rng.h,
     // cl/core/scan.cl (SCAN_T ulong) and cl/mlt/burnin.cl.
     BurnInPicker(const ClContext& cl, cl_program program, std::uint32_t max_n);
     // Adds the next round, the samples of burn-in round `round`, of n samples

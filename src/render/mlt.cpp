@@ -333,23 +333,27 @@ std::uint32_t MltRenderer::state_bytes_per_chain() const {
     return ds_.layout.chain_bytes(opt_.float32_states);
 }
 
+MltStats mlt_join_rows(const std::vector<std::uint64_t>& rows) {
+    MltStats s;
+    for (std::size_t r = 0; r + MLT_STAT_COUNT <= rows.size(); r += MLT_STAT_COUNT) {
+#define SMALLMLT_JOIN_SUM(a, b) ((a) + (b))
+#define SMALLMLT_JOIN_MAX(a, b) std::max((a), (b))
+#define SMALLMLT_JOIN_ROW(NAME, member, JOIN)                                                      \
+    s.member = SMALLMLT_JOIN_##JOIN(s.member, rows[r + MLT_STAT_##NAME]);
+        MLT_COUNTERS(SMALLMLT_JOIN_ROW)
+#undef SMALLMLT_JOIN_ROW
+#undef SMALLMLT_JOIN_MAX
+#undef SMALLMLT_JOIN_SUM
+        s.large_lum += rows[r + MLT_STAT_LARGE_LUM];
+    }
+    return s;
+}
+
 MltStats MltRenderer::stats() const {
-    std::vector<cl_ulong> rows(stats_.bytes() / sizeof(cl_ulong));
+    std::vector<std::uint64_t> rows(stats_.bytes() / sizeof(cl_ulong));
     stats_.read(cl_, rows.data());
-    cl_ulong s[MLT_STAT_COUNT] = {};
-    for (std::size_t r = 0; r + MLT_STAT_COUNT <= rows.size(); r += MLT_STAT_COUNT)
-        for (int i = 0; i < MLT_STAT_COUNT; ++i)
-            s[i] = i == MLT_STAT_LONGEST ? std::max(s[i], rows[r + i]) : s[i] + rows[r + i];
-    MltStats out;
+    MltStats out = mlt_join_rows(rows);
     out.mutations = std::uint64_t(steps_run_) * opt_.threads;
-    out.accepted = s[MLT_STAT_ACCEPTED];
-    out.large = s[MLT_STAT_LARGE];
-    out.nonfinite = s[MLT_STAT_NONFINITE];
-    out.rays = s[MLT_STAT_RAYS];
-    out.stuck = s[MLT_STAT_STUCK];
-    out.atomics = s[MLT_STAT_ATOMICS];
-    out.large_lum = s[MLT_STAT_LARGE_LUM];
-    out.longest_run = std::uint32_t(s[MLT_STAT_LONGEST]);
     return out;
 }
 
@@ -386,10 +390,11 @@ std::vector<std::string> MltRenderer::notes() const {
         char buf[320];
         std::snprintf(buf, sizeof buf,
                       "%llu of %u chains (%.2f%%) stayed on one path for %u steps or more "
-                      "(longest %u): expect bright blotches where they stayed, fading as "
+                      "(longest %llu): expect bright blotches where they stayed, fading as "
                       "the render goes on (doc/stability.md)",
                       static_cast<unsigned long long>(s.stuck), chains(),
-                      100.0 * double(s.stuck) / chains(), opt_.stuck_run, s.longest_run);
+                      100.0 * double(s.stuck) / chains(), opt_.stuck_run,
+                      static_cast<unsigned long long>(s.longest_run));
         out.push_back(buf);
     }
     if (prepared_ && burn_in_fixed_ > 0 && iterations_ == 0)
@@ -410,12 +415,13 @@ std::string MltRenderer::summary(double) const {
                   "%.3f M rays/s (steps only; b and chain start %.2f s), acceptance %.1f%%, "
                   "large steps %.1f%%, %.2f global atomics/mutation, b = %.5g (+-%.2f%%), "
                   "%llu non-finite dropped, "
-                  "longest run of rejections %u, %llu chains stuck (%u in a row)",
+                  "longest run of rejections %llu, %llu chains stuck (%u in a row)",
                   chains(), opt_.proposals, steps_run_, state_bytes_per_chain(),
                   double(s.mutations) * per_s, double(s.rays) * per_s, prepare_seconds_,
                   double(s.accepted) * per_mutation, double(s.large) * per_mutation,
                   s.mutations ? double(s.atomics) / double(s.mutations) : 0.0, be.b,
-                  100.0 * be.rel_error, static_cast<unsigned long long>(s.nonfinite), s.longest_run,
+                  100.0 * be.rel_error, static_cast<unsigned long long>(s.nonfinite),
+                  static_cast<unsigned long long>(s.longest_run),
                   static_cast<unsigned long long>(s.stuck), opt_.stuck_run);
     std::string out = buf;
     if (omc_) {

@@ -92,13 +92,19 @@ double mlt_b(std::uint64_t lum_fixed, std::uint64_t samples);
 // whole image; its error is not reduced by running the chains longer).
 constexpr double kMaxBRelError = 0.01;
 
+// The counters of MLT_COUNTERS (cl/core/shared_types.h), joined over the
+// work-groups' rows, and the mutations the steps made.
 struct MltStats {
-    std::uint64_t mutations = 0, accepted = 0, large = 0, nonfinite = 0, rays = 0;
-    std::uint64_t atomics = 0;     // atomic operations on global memory by the steps
-    std::uint64_t large_lum = 0;   // sum of the large steps' I(y), MLT_B_FRAC_BITS fixed point
-    std::uint64_t stuck = 0;       // chains that rejected stuck_run proposals in a row
-    std::uint32_t longest_run = 0; // most consecutive rejections of any chain
+    std::uint64_t mutations = 0;
+#define SMALLMLT_STAT_MEMBER(NAME, member, JOIN) std::uint64_t member = 0;
+    MLT_COUNTERS(SMALLMLT_STAT_MEMBER)
+#undef SMALLMLT_STAT_MEMBER
+    std::uint64_t large_lum = 0; // sum of the large steps' I(y), MLT_B_FRAC_BITS fixed point
 };
+
+// The counters of rows of MLT_STAT_COUNT words, each joined as
+// MLT_COUNTERS says (a sum or a maximum).
+MltStats mlt_join_rows(const std::vector<std::uint64_t>& rows);
 
 class MltRenderer : public Integrator {
   public:
