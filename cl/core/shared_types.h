@@ -146,6 +146,30 @@ typedef struct {
     u32 per_round;
 } BurnInFilm;
 
+/* The layout of every struct above, one list: S(struct, size in bytes)
+ * and, for each field past the first, F(struct, field, offset in bytes).
+ * The host static_asserts it (src/scene/shared_layout.cpp), and the host and
+ * a probe kernel (test/cl/probe.cl) both report sizes and offsets in its
+ * order for a test to compare. */
+#define SHARED_LAYOUT(S, F)                                                                        \
+    S(Triangle, 48)                                                                                \
+    F(Triangle, material, 12) F(Triangle, e1, 16) F(Triangle, light_pick_prob, 28)                 \
+        F(Triangle, e2, 32) F(Triangle, light_index, 44) S(BvhNode, 32) F(BvhNode, offset, 12)     \
+            F(BvhNode, hi, 16) F(BvhNode, count, 28) S(Material, 48) F(Material, type, 12)         \
+                F(Material, ke, 16) F(Material, ior, 28) F(Material, ks, 32)                       \
+                    F(Material, emissive, 44) S(LightEntry, 8) F(LightEntry, cdf_hi, 4)            \
+                        S(Frame, 64) F(Frame, width, 12) F(Frame, top_left, 16)                    \
+                            F(Frame, height, 28) F(Frame, du, 32) F(Frame, depth, 44)              \
+                                F(Frame, dv, 48) F(Frame, num_lights, 60) S(ChainValue, 20)        \
+                                    F(ChainValue, meta, 12) F(ChainValue, stay, 16)                \
+                                        S(FilmShape, 16) F(FilmShape, bands, 4)                    \
+                                            F(FilmShape, frac_bits, 8) F(FilmShape, scale, 12)     \
+                                                S(TargetCells, 8) F(TargetCells, columns, 4)       \
+                                                    S(BurnInFilm, 20) F(BurnInFilm, seed_hi, 4)    \
+                                                        F(BurnInFilm, offset, 8)                   \
+                                                            F(BurnInFilm, step, 12)                \
+                                                                F(BurnInFilm, per_round, 16)
+
 #define FILM_MAX_BANDS 4
 
 /* Kernel arguments that travel as units, declared once for the host and

@@ -1,5 +1,5 @@
 // Size and field offsets of every shared struct as the host compiler lays
-// them out, in the order of the probe_layout kernel (test/cl/probe.cl).
+// them out, in the order of SHARED_LAYOUT (cl/core/shared_types.h).
 #pragma once
 #include "shared_types.h"
 

@@ -7,54 +7,17 @@
 #define PROBE_OFFSET(obj, field)                                                                   \
     ((uint)((__private const char*)&(obj).field - (__private const char*)&(obj)))
 
-/* Writes sizeof and field offsets of every shared struct, in the order that
- * src/scene/shared_layout.cpp expects. */
+/* Writes sizeof and field offsets of every shared struct, in the order of
+ * SHARED_LAYOUT (cl/core/shared_types.h), as host_layout does. */
+#define PROBE_SIZE(T, size) out[i++] = sizeof(T);
+#define PROBE_FIELD(T, field, off)                                                                 \
+    {                                                                                              \
+        T obj;                                                                                     \
+        out[i++] = PROBE_OFFSET(obj, field);                                                       \
+    }
 __kernel void probe_layout(__global uint* out) {
-    Triangle tri;
-    BvhNode node;
-    Material mat;
-    LightEntry light;
-    Frame frame;
-    ChainValue value;
-    TargetCells cells;
-    BurnInFilm film;
     uint i = 0;
-    out[i++] = sizeof(Triangle);
-    out[i++] = PROBE_OFFSET(tri, material);
-    out[i++] = PROBE_OFFSET(tri, e1);
-    out[i++] = PROBE_OFFSET(tri, light_pick_prob);
-    out[i++] = PROBE_OFFSET(tri, e2);
-    out[i++] = PROBE_OFFSET(tri, light_index);
-    out[i++] = sizeof(BvhNode);
-    out[i++] = PROBE_OFFSET(node, offset);
-    out[i++] = PROBE_OFFSET(node, hi);
-    out[i++] = PROBE_OFFSET(node, count);
-    out[i++] = sizeof(Material);
-    out[i++] = PROBE_OFFSET(mat, type);
-    out[i++] = PROBE_OFFSET(mat, ke);
-    out[i++] = PROBE_OFFSET(mat, ior);
-    out[i++] = PROBE_OFFSET(mat, ks);
-    out[i++] = PROBE_OFFSET(mat, emissive);
-    out[i++] = sizeof(LightEntry);
-    out[i++] = PROBE_OFFSET(light, cdf_hi);
-    out[i++] = sizeof(Frame);
-    out[i++] = PROBE_OFFSET(frame, width);
-    out[i++] = PROBE_OFFSET(frame, top_left);
-    out[i++] = PROBE_OFFSET(frame, height);
-    out[i++] = PROBE_OFFSET(frame, du);
-    out[i++] = PROBE_OFFSET(frame, depth);
-    out[i++] = PROBE_OFFSET(frame, dv);
-    out[i++] = PROBE_OFFSET(frame, num_lights);
-    out[i++] = sizeof(ChainValue);
-    out[i++] = PROBE_OFFSET(value, meta);
-    out[i++] = PROBE_OFFSET(value, stay);
-    out[i++] = sizeof(TargetCells);
-    out[i++] = PROBE_OFFSET(cells, columns);
-    out[i++] = sizeof(BurnInFilm);
-    out[i++] = PROBE_OFFSET(film, seed_hi);
-    out[i++] = PROBE_OFFSET(film, offset);
-    out[i++] = PROBE_OFFSET(film, step);
-    out[i++] = PROBE_OFFSET(film, per_round);
+    SHARED_LAYOUT(PROBE_SIZE, PROBE_FIELD)
 }
 
 /* Closest hit of each ray (origin xyz, tmax in o; direction in d):
