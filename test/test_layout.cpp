@@ -1,5 +1,6 @@
 // Shared struct layouts agree between host and device, and the sample layout
 // has exactly the slots a scene needs.
+#include "fixed_point.h"
 #include "render/programs.hpp"
 #include "scene/sample_layout.hpp"
 #include "scene/shared_layout.hpp"
@@ -7,6 +8,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <numeric>
 
 using namespace smallmlt;
@@ -61,4 +63,29 @@ TEST(SampleLayout, LightPickProbabilitiesAreExactAndSumToOne) {
         sum += ds.tris[e.triangle].light_pick_prob;
     EXPECT_EQ(sum, 1.0);
     EXPECT_EQ(ds.lights.back().cdf_hi, 1u << light_pick_bits(12));
+}
+
+// b's fixed point (cl/core/fixed_point.h) is one definition: the host's sum
+// of the burn-in and the device's of the large steps round alike, for
+// luminances where float and double rounding differ among them.
+TEST(SharedFixedPoint, HostAndDeviceRoundBsSamplesAlike) {
+    std::vector<float> lum = {0.0f,     -1.0f,         1e-9f, 0.3f,
+                              0.5f,     0.75f + 1e-7f, 1.0f,  std::nextafter(1.0f, 2.0f),
+                              3.14159f, 1234.567f,     1e20f};
+    for (std::uint32_t i = 0; i < 200; ++i)
+        lum.push_back(0.5f + float(i) * 0.0123457f);
+    ClProgram prog(test::cl().build(
+        program_files({Program::PathTracer, "", "", {"test/cl/probe.cl"}}, Stage::Geometry), ""));
+    ClKernel k(prog.p, "probe_fixed_b");
+    ClBuffer in(test::cl(), CL_MEM_READ_ONLY, lum.size() * sizeof(float), lum.data());
+    ClBuffer out(test::cl(), CL_MEM_WRITE_ONLY, lum.size() * sizeof(cl_ulong));
+    k.set_args(in, cl_uint(lum.size()), out);
+    k.run(test::cl(), lum.size());
+    std::vector<cl_ulong> dev(lum.size());
+    out.read(test::cl(), dev.data());
+    for (std::size_t i = 0; i < lum.size(); ++i)
+        EXPECT_EQ(dev[i], fixed_b_sample(lum[i])) << "luminance " << lum[i];
+    EXPECT_EQ(fixed_b_sample(0.0f), 0u);
+    EXPECT_EQ(fixed_b_sample(1.0f), std::uint64_t(1) << MLT_B_FRAC_BITS);
+    EXPECT_EQ(fixed_b_sample(1e20f), std::uint64_t(1) << (32 + MLT_B_FRAC_BITS));
 }

@@ -220,11 +220,6 @@ inline void mlt_move(SampleSource* src, __global ChainValue* value, ChainValue x
     *value = chain_moved(x, y.f, y.bounces);
 }
 
-/* A large step's luminance in the fixed point of MLT_STAT_LARGE_LUM. */
-inline ulong mlt_b_sample(float lum) {
-    return (ulong)(fmin(lum, MLT_B_MAX_SAMPLE) * (float)(1u << MLT_B_FRAC_BITS) + 0.5f);
-}
-
 /* For kernels that count only dropped samples: the work-item's `nonfinite`
  * joins the group's count, which goes to the group's row of stats. */
 inline void mlt_publish_nonfinite(__global ulong* stats, __local uint* count, uint nonfinite) {
@@ -240,7 +235,7 @@ inline void mlt_count(__local uint* count, __local ulong* large_lum, bool large,
                       uint nonfinite, uint atomics) {
     atomic_add(&count[MLT_STAT_RAYS], y.rays);
     if (large) atomic_inc(&count[MLT_STAT_LARGE]);
-    large_lum[get_local_id(0)] = large ? mlt_b_sample(path_luminance(y.f)) : 0ul;
+    large_lum[get_local_id(0)] = large ? fixed_b_sample(path_luminance(y.f)) : 0ul;
     if (nonfinite) atomic_add(&count[MLT_STAT_NONFINITE], nonfinite);
     if (atomics) atomic_add(&count[MLT_STAT_ATOMICS], atomics);
 }

@@ -140,7 +140,7 @@ void MltRenderer::sample_starts(RankGroup& ranks) {
         }
         if (it < first) continue;
         for (float y : host) {
-            sum += b_sample_fixed(y);
+            sum += fixed_b_sample(y);
             sum2 += double(y) * y;
         }
         if (opt_.burn_in) picker.add_round(lum, host, m, scan, pick_seed, it, chains, picks_);
@@ -176,12 +176,6 @@ void MltRenderer::fix_target(RankGroup& ranks) {
     std::vector<float> weights = target_weights(cells_, w, h, sums);
     weights.resize(weight_.bytes() / sizeof(float), 1.0f); // at most kTargetMaxCells
     weight_.write(cl_, weights.data());
-}
-
-std::uint64_t b_sample_fixed(float lum) {
-    if (!(lum > 0)) return 0;
-    return std::uint64_t(
-        std::min(double(lum), double(MLT_B_MAX_SAMPLE)) * double(1u << MLT_B_FRAC_BITS) + 0.5);
 }
 
 double mlt_b(std::uint64_t lum_fixed, std::uint64_t samples) {

@@ -6,6 +6,7 @@
 #include "device/ocl.hpp"
 #include "device/scan.hpp"
 #include "device/scene_buffers.hpp"
+#include "fixed_point.h"
 #include "image/image.hpp"
 #include "render/burn_in.hpp"
 #include "render/integrator.hpp"
@@ -82,9 +83,6 @@ void mlt_require_device(const DeviceInfo& d, const MltOptions& opt);
 // Kernel files of the MLT program, in build order.
 std::vector<std::string> mlt_program_files(const MltOptions& opt);
 
-// A large step's or burn-in sample's luminance I in MLT_B_FRAC_BITS fixed
-// point (mlt_b_sample of cl/mlt/mlt_step.cl); 0 unless I > 0.
-std::uint64_t b_sample_fixed(float lum);
 // b from the fixed-point sum of `samples` luminances.
 double mlt_b(std::uint64_t lum_fixed, std::uint64_t samples);
 

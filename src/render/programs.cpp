@@ -17,6 +17,7 @@ struct Row {
 const Row kTable[] = {
     {Stage::Core,     "cl/core/shared_types.h",     true,  true},
     {Stage::Core,     "cl/core/rng.h",              true,  true},
+    {Stage::Core,     "cl/core/fixed_point.h",      true,  true},
     {Stage::Core,     "cl/core/scan.cl",            false, true},
     {Stage::Geometry, "cl/geometry/geometry.cl",    true,  true},
     {Stage::Geometry, "cl/geometry/bvh.cl",         true,  true},

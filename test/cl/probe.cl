@@ -66,3 +66,10 @@ __kernel void probe_divergent_args(__global uint* out, const uint a, const ulong
     if (i & 1u) r ^= (uint)b + c.shift + f.num_lights;
     out[i] = r;
 }
+
+/* b's fixed point of each luminance, as the device computes it
+ * (fixed_b_sample, cl/core/fixed_point.h). */
+__kernel void probe_fixed_b(__global const float* lum, const uint n, __global ulong* out) {
+    uint i = get_global_id(0);
+    if (i < n) out[i] = fixed_b_sample(lum[i]);
+}
