@@ -18,20 +18,30 @@
 # (// and /* */ outside strings, # in shell, awk and Python, and Python's
 # docstrings) and for every line of a Markdown file and of the Makefile.
 comments() {
+    c='' text='' txt='' hash=''
     for f in "$@"; do
         case $f in
-        *.cpp | *.hpp | *.cl | *.h) c_comments "$f" ;;
-        *.md | Makefile) awk '{ print FILENAME ":" FNR ":" $0 }' "$f" ;;
-        # test/mutants.txt: as test/mutants.sh reads it, only whole lines.
-        *.txt) awk '/^#/ { print FILENAME ":" FNR ":" $0 }' "$f" ;;
-        *) hash_comments "$f" ;;
+        *.cpp | *.hpp | *.cl | *.h) c="$c $f" ;;
+        *.md | Makefile) text="$text $f" ;;
+        *.txt) txt="$txt $f" ;;
+        *) hash="$hash $f" ;;
         esac
     done
+    # shellcheck disable=SC2086 # lists of paths without spaces
+    {
+        [ -z "$c" ] || c_comments $c
+        [ -z "$text" ] || awk '{ print FILENAME ":" FNR ":" $0 }' $text
+        # test/mutants.txt: as test/mutants.sh reads it, only whole lines.
+        [ -z "$txt" ] || awk '/^#/ { print FILENAME ":" FNR ":" $0 }' $txt
+        [ -z "$hash" ] || hash_comments $hash
+    }
 }
 
+# c_comments FILE...
 c_comments() {
     awk '
     function flush() { if (buf != "") print FILENAME ":" FNR ":" buf; buf = "" }
+    FNR == 1 { st = "code" }
     {
         if (st == "str") st = "code"
         n = length($0)
@@ -56,13 +66,14 @@ c_comments() {
             } else i++
         }
         flush()
-    }' "$1"
+    }' "$@"
 }
 
-# hash_comments FILE: the text after a # that starts a word outside quotes;
+# hash_comments FILE...: the text after a # that starts a word outside quotes;
 # in Python also the lines of a docstring.
 hash_comments() {
-    awk -v py="$(case $1 in *.py) echo 1 ;; esac)" '
+    awk '
+    FNR == 1 { py = FILENAME ~ /\.py$/; doc = 0 }
     {
         if (py && doc) { print FILENAME ":" FNR ":" $0; if (index($0, "\"\"\"")) doc = 0; next }
         if (py && index($0, "\"\"\"")) {
@@ -82,7 +93,7 @@ hash_comments() {
                 break
             }
         }
-    }' "$1"
+    }' "$@"
 }
 
 # named_paths: reads "FILE:LINE:TEXT", prints "FILE:LINE:PATH" for each path
@@ -131,7 +142,7 @@ stale_paths() {
         [ -n "$skip" ] && continue
         found=
         # PATH|ALTERNATIVE: a top-level name, or one beside its doc.
-        for q in $(echo "$p" | tr '|' ' '); do
+        for q in "${p%%|*}" "${p#*|}"; do
             case $q in
             *%*) [ -n "$(find . -path "./$(echo "$q" | tr % '*')" | head -n 1)" ] && found=1 ;;
             *)
