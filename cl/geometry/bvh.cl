@@ -1,4 +1,4 @@
-/* BVH traversal over the flattened tree of src/bvh.cpp: nearer child first,
+/* BVH traversal over the flattened tree of src/scene/bvh.cpp: nearer child first,
  * the farther one on a stack with its entry distance, so subtrees behind the
  * closest hit so far are skipped. */
 

@@ -1,4 +1,4 @@
-/* The per-scene layout of primary-sample numbers (src/sample_layout.cpp
+/* The per-scene layout of primary-sample numbers (src/scene/sample_layout.cpp
  * derives it and defines LAYOUT_*, SLOT_* and the layout_slot_* tables).
  * Numbers 0 and 1 place the sample on the film (LAYOUT_CAMERA_BITS each);
  * each bounce then owns LAYOUT_BOUNCE_DIMS numbers, high-precision slots

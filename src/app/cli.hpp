@@ -25,7 +25,7 @@ struct RenderOptions {
     std::string scene;
     Method method = Method::Mlt;
     std::optional<float> large_step;      // default depends on burn-in
-    std::optional<std::uint32_t> threads; // unset: auto (src/memory_plan.hpp)
+    std::optional<std::uint32_t> threads; // unset: auto (src/device/memory_plan.hpp)
     std::uint32_t proposals = 1;          // K: threads per chain
     std::optional<std::uint64_t> device_mem;
     std::optional<std::string> profile; // --profile: a device of doc/devices.md

@@ -1,5 +1,5 @@
 // smallmlt entry point: dispatches commands and turns errors into messages
-// and exit codes (src/error.hpp).
+// and exit codes (src/base/error.hpp).
 #include "app/cli.hpp"
 #include "app/commands.hpp"
 #include "base/error.hpp"

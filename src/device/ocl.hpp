@@ -23,7 +23,7 @@ struct SourceStart {
 };
 
 // A build log with "<kernel>:N:" (compilers that ignore #line, such as
-// NVIDIA's) rewritten as "cl/file.cl:M:", M the line within that file.
+// NVIDIA's) rewritten as "cl/<stage>/<file>.cl:M:", M the line within that file.
 std::string cl_name_log_lines(const std::string& log, const std::vector<SourceStart>& starts);
 
 #define CL_CHECK(call) ::smallmlt::cl_check((call), #call, __FILE__, __LINE__)
@@ -42,7 +42,7 @@ struct DeviceInfo {
     // (gallivm) stops each invocation at 65,535, so on it a launch must be
     // one path per work-item (cl_loop_iteration_limit).
     std::uint32_t loop_iteration_limit = 0;
-    bool emulated = false; // limited by --profile or --device-mem (src/device_profile.hpp)
+    bool emulated = false; // limited by --profile or --device-mem (src/device/device_profile.hpp)
 };
 
 // The loop limit of a device by its name (DeviceInfo::loop_iteration_limit).
@@ -69,7 +69,7 @@ class ClContext {
     cl_command_queue queue() const { return queue_; }
 
     // Device memory held by ClBuffers of this context now, and the most held
-    // at once since the last reset_peak (src/memory_plan.cpp predicts it).
+    // at once since the last reset_peak (src/device/memory_plan.cpp predicts it).
     std::uint64_t live_bytes() const { return live_bytes_; }
     std::uint64_t peak_bytes() const { return peak_bytes_; }
     void reset_peak() const { peak_bytes_ = live_bytes_; }

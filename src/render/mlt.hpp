@@ -198,7 +198,7 @@ class MltRenderer : public Integrator {
     const ClContext& cl_;
     const DeviceScene& ds_;
     MltOptions opt_;
-    MemoryPlan plan_; // sizes of every buffer below (src/memory_plan.cpp)
+    MemoryPlan plan_; // sizes of every buffer below (src/device/memory_plan.cpp)
     ClProgram program_;
     ClKernel k_lum_, k_init_, k_step_;
     mutable ClKernel k_owed_; // run by image(), which leaves the film as it was

@@ -72,7 +72,7 @@ class PathTracer : public Integrator {
     const DeviceScene& ds_;
     std::uint64_t seed_;
     std::uint32_t spp_ = 0;
-    MemoryPlan plan_; // sizes of the buffers below (src/memory_plan.cpp)
+    MemoryPlan plan_; // sizes of the buffers below (src/device/memory_plan.cpp)
     ClProgram program_;
     ClKernel kernel_;
     std::optional<SceneBuffers> own_scene_; // unless the OMC part shares its render's

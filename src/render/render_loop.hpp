@@ -2,7 +2,7 @@
 // quarter second until the sample count or the time is reached, measures the
 // error against a reference when the convergence log is due and there is an
 // image (that time is not render time), draws progress, and stops after the current pass when
-// interrupted (src/interrupt.hpp).
+// interrupted (src/base/interrupt.hpp).
 #pragma once
 #include "render/convergence_log.hpp"
 #include "render/integrator.hpp"

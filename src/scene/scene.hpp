@@ -41,7 +41,7 @@ constexpr int kMaxFilmSide = 16384;
 Scene load_scene(const std::string& path);
 
 // Reads the triangles of an OBJ file and the materials of the MTL files it
-// names into `scene` (src/obj_loader.cpp). `where` is "scene:line" of the
+// names into `scene` (src/scene/obj_loader.cpp). `where` is "scene:line" of the
 // mesh directive, for messages about the file as a whole.
 void load_obj(const std::string& obj_path, const std::string& where, Scene& scene);
 
