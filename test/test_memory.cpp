@@ -59,7 +59,7 @@ TEST(MemoryPlan, PredictsWhatMltRendersAllocate) {
         MemoryPlan plan =
             plan_mlt(ds, ChainShape{c.threads, c.proposals, false, false, c.split != Split::None},
                      scan_work_group(test::cl().device()));
-        EXPECT_EQ(plan.bytes("values"),
+        EXPECT_EQ(plan.bytes(Buffer::Values),
                   std::uint64_t(c.threads / c.proposals) * sizeof(ChainValue));
         EXPECT_EQ(mlt_peak(ds, c.threads, c.proposals, c.split), plan.total())
             << c.scene << " N " << c.threads << " K " << c.proposals << " split "
@@ -82,9 +82,9 @@ TEST(MemoryPlan, ProposalsShareChainStates) {
     std::size_t wg = scan_work_group(test::cl().device());
     MemoryPlan k1 = plan_mlt(ds, ChainShape{4096, 1, false}, wg);
     MemoryPlan k4 = plan_mlt(ds, ChainShape{4096, 4, false}, wg);
-    EXPECT_EQ(k4.bytes("state") * 4, k1.bytes("state"));
-    EXPECT_EQ(k4.bytes("values") * 4, k1.bytes("values"));
-    EXPECT_EQ(k4.bytes("luminance"), k1.bytes("luminance"));
+    EXPECT_EQ(k4.bytes(Buffer::State) * 4, k1.bytes(Buffer::State));
+    EXPECT_EQ(k4.bytes(Buffer::Values) * 4, k1.bytes(Buffer::Values));
+    EXPECT_EQ(k4.bytes(Buffer::Luminance), k1.bytes(Buffer::Luminance));
 }
 
 // The burn-in keeps each thread's luminance (4 bytes) and its 64-bit
@@ -94,10 +94,10 @@ TEST(MemoryPlan, BurnInScansSixtyFourBitWeights) {
     DeviceScene ds = prepare_scene(test::scene("cornell", 16, 16));
     std::size_t wg = scan_work_group(test::cl().device());
     MemoryPlan p = plan_mlt(ds, ChainShape{4096, 2, false}, wg);
-    EXPECT_EQ(p.bytes("luminance"), 4096u * 4);
-    EXPECT_EQ(p.bytes("scan"), 4096u * 8);
-    EXPECT_EQ(p.bytes("scan blocks"), scan_bytes(4096, wg, 8));
-    EXPECT_EQ(p.bytes("picks"), 2048u * 8); // (round, index) per chain
+    EXPECT_EQ(p.bytes(Buffer::Luminance), 4096u * 4);
+    EXPECT_EQ(p.bytes(Buffer::Scan), 4096u * 8);
+    EXPECT_EQ(p.bytes(Buffer::ScanBlocks), scan_bytes(4096, wg, 8));
+    EXPECT_EQ(p.bytes(Buffer::Picks), 2048u * 8); // (round, index) per chain
 }
 
 // Smaller budgets give fewer threads, and a render with the chosen count

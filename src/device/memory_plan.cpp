@@ -18,23 +18,23 @@ template <typename T> std::uint64_t vector_bytes(const std::vector<T>& v) {
     return std::uint64_t(v.size()) * sizeof(T);
 }
 
+void add(MemoryPlan& p, Buffer kind, std::uint64_t bytes) {
+    p.buffers.push_back({kind, 0, bytes});
+}
+
 void add_scene(MemoryPlan& p, const DeviceScene& ds) {
-    p.buffers.push_back({"triangles", vector_bytes(ds.tris), false});
-    p.buffers.push_back({"bvh", vector_bytes(ds.nodes), false});
-    p.buffers.push_back({"materials", vector_bytes(ds.materials), false});
-    p.buffers.push_back({"lights", vector_bytes(ds.lights), false});
+    add(p, Buffer::Triangles, vector_bytes(ds.tris));
+    add(p, Buffer::Bvh, vector_bytes(ds.nodes));
+    add(p, Buffer::Materials, vector_bytes(ds.materials));
+    add(p, Buffer::Lights, vector_bytes(ds.lights));
 }
 
 std::uint64_t pixels(const DeviceScene& ds) {
     return std::uint64_t(ds.frame.width) * ds.frame.height;
 }
 
-bool is_chain_state(const std::string& name) {
-    return name == "state" || name == "values";
-}
-
-bool is_film(const std::string& name) {
-    return name.rfind("film band", 0) == 0;
+bool is_chain_state(Buffer b) {
+    return b == Buffer::State || b == Buffer::Values;
 }
 
 void add_film(MemoryPlan& p, std::uint64_t pixels, std::uint64_t bytes_per_pixel,
@@ -43,7 +43,7 @@ void add_film(MemoryPlan& p, std::uint64_t pixels, std::uint64_t bytes_per_pixel
     for (std::uint32_t b = 0; b < split.bands; ++b) {
         std::uint64_t first = b * split.band_pixels;
         std::uint64_t n = std::min(split.band_pixels, pixels - first);
-        p.buffers.push_back({"film band " + std::to_string(b), n * bytes_per_pixel, false});
+        p.buffers.push_back({Buffer::FilmBand, b, n * bytes_per_pixel});
     }
 }
 
@@ -68,29 +68,41 @@ std::uint64_t MemoryPlan::largest() const {
     return m;
 }
 
-std::uint64_t MemoryPlan::bytes(const std::string& name) const {
+const char* buffer_name(Buffer b) {
+    switch (b) {
+#define SMALLMLT_BUFFER_NAME(e, name)                                                              \
+    case Buffer::e:                                                                                \
+        return name;
+        SMALLMLT_BUFFERS(SMALLMLT_BUFFER_NAME)
+#undef SMALLMLT_BUFFER_NAME
+    }
+    return "?";
+}
+
+std::uint64_t MemoryPlan::bytes(Buffer kind) const {
     for (const PlannedBuffer& b : buffers)
-        if (b.name == name) return b.bytes;
-    throw std::logic_error("no planned buffer " + name);
+        if (b.kind == kind) return b.bytes;
+    throw std::logic_error(std::string("no planned buffer ") + buffer_name(kind));
 }
 
 std::uint64_t MemoryPlan::sum(bool chain_state) const {
     std::uint64_t t = 0;
     for (const PlannedBuffer& b : buffers)
-        if (is_chain_state(b.name) == chain_state) t += device_alloc_bytes(b.bytes);
+        if (is_chain_state(b.kind) == chain_state) t += device_alloc_bytes(b.bytes);
     return t;
 }
 
 std::uint64_t MemoryPlan::film() const {
     std::uint64_t t = 0;
     for (const PlannedBuffer& b : buffers)
-        if (is_film(b.name)) t += device_alloc_bytes(b.bytes);
+        if (b.kind == Buffer::FilmBand) t += device_alloc_bytes(b.bytes);
     return t;
 }
 
 std::uint32_t MemoryPlan::film_bands() const {
-    return std::uint32_t(std::count_if(buffers.begin(), buffers.end(),
-                                       [](const PlannedBuffer& b) { return is_film(b.name); }));
+    return std::uint32_t(std::count_if(buffers.begin(), buffers.end(), [](const PlannedBuffer& b) {
+        return b.kind == Buffer::FilmBand;
+    }));
 }
 
 FilmBands film_bands(std::uint64_t pixels, std::uint64_t bytes_per_pixel, std::uint64_t max_alloc) {
@@ -120,8 +132,7 @@ MemoryPlan plan_pt(const DeviceScene& ds, std::uint64_t max_alloc) {
     MemoryPlan p;
     add_scene(p, ds);
     add_film(p, pixels(ds), kPtFilmPixelBytes, max_alloc);
-    p.buffers.push_back(
-        {"stats", group_rows(pixels(ds)) * PT_STAT_COUNT * sizeof(std::uint64_t), false});
+    add(p, Buffer::Stats, group_rows(pixels(ds)) * PT_STAT_COUNT * sizeof(std::uint64_t));
     return p;
 }
 
@@ -131,30 +142,27 @@ MemoryPlan plan_mlt(const DeviceScene& ds, const ChainShape& shape, std::size_t 
     add_scene(p, ds);
     std::uint64_t chains = shape.chains(), threads = shape.threads;
     std::uint64_t words = ds.layout.chain_words(shape.float32_states);
-    p.buffers.push_back({"state", words * chains * 4, false});
-    p.buffers.push_back({"values", chains * sizeof(ChainValue), false});
+    add(p, Buffer::State, words * chains * 4);
+    add(p, Buffer::Values, chains * sizeof(ChainValue));
     add_film(p, pixels(ds), mlt_film_pixel_bytes(shape.film_atomics64), max_alloc);
-    p.buffers.push_back(
-        {"stats", group_rows(threads) * MLT_STAT_COUNT * sizeof(std::uint64_t), false});
+    add(p, Buffer::Stats, group_rows(threads) * MLT_STAT_COUNT * sizeof(std::uint64_t));
     // Each chain's start, (round, index) (cl/mlt/burnin.cl).
-    p.buffers.push_back({"picks", chains * 2 * sizeof(std::uint32_t), false});
-    p.buffers.push_back({"target weights", shape.target_cells * sizeof(float), false});
-    p.buffers.push_back({"luminance", threads * sizeof(float), true});
+    add(p, Buffer::Picks, chains * 2 * sizeof(std::uint32_t));
+    add(p, Buffer::TargetWeights, shape.target_cells * sizeof(float));
+    add(p, Buffer::Luminance, threads * sizeof(float));
     // The burn-in's 64-bit fixed-point weights, scanned in place (cl/mlt/burnin.cl).
-    p.buffers.push_back({"scan", threads * sizeof(std::uint64_t), true});
+    add(p, Buffer::Scan, threads * sizeof(std::uint64_t));
     // Several buffers; their sum counts as one entry (at least as big as each).
-    p.buffers.push_back({"scan blocks", scan_bytes(threads, scan_wg, sizeof(std::uint64_t)), true});
+    add(p, Buffer::ScanBlocks, scan_bytes(threads, scan_wg, sizeof(std::uint64_t)));
     if (shape.omc_part) {
         // The OMC part's scratch band and counters (src/render/path_tracer.hpp).
-        p.buffers.push_back(
-            {"OMC scratch band", omc_scratch_pixels(pixels(ds)) * kPtFilmPixelBytes, false});
-        p.buffers.push_back(
-            {"OMC stats", group_rows(pixels(ds)) * PT_STAT_COUNT * sizeof(std::uint64_t), false});
+        add(p, Buffer::OmcScratchBand, omc_scratch_pixels(pixels(ds)) * kPtFilmPixelBytes);
+        add(p, Buffer::OmcStats, group_rows(pixels(ds)) * PT_STAT_COUNT * sizeof(std::uint64_t));
     }
     // The parts and pixel of each burn-in sample (cl/kernels/mlt.cl): for a
     // split, and for the two-stage target's weights.
     if (shape.omc_part || shape.target_cells > 1)
-        p.buffers.push_back({"OMC samples", threads * 8 * sizeof(float), true});
+        add(p, Buffer::OmcSamples, threads * 8 * sizeof(float));
     return p;
 }
 

@@ -14,20 +14,48 @@
 
 namespace smallmlt {
 
+// Every kind of device buffer a render allocates: X(Enum, name). The
+// burn-in's (luminance, scan, scan blocks, OMC samples) are freed once the
+// chains have started, but counted as held at once: total() is the peak.
+#define SMALLMLT_BUFFERS(X)                                                                        \
+    X(Triangles, "triangles")                                                                      \
+    X(Bvh, "bvh")                                                                                  \
+    X(Materials, "materials")                                                                      \
+    X(Lights, "lights")                                                                            \
+    X(State, "state")                                                                              \
+    X(Values, "values")                                                                            \
+    X(FilmBand, "film band")                                                                       \
+    X(Stats, "stats")                                                                              \
+    X(Picks, "picks")                                                                              \
+    X(TargetWeights, "target weights")                                                             \
+    X(Luminance, "luminance")                                                                      \
+    X(Scan, "scan")                                                                                \
+    X(ScanBlocks, "scan blocks")                                                                   \
+    X(OmcScratchBand, "OMC scratch band")                                                          \
+    X(OmcStats, "OMC stats")                                                                       \
+    X(OmcSamples, "OMC samples")
+
+#define SMALLMLT_BUFFER_ENUM(e, name) e,
+enum class Buffer { SMALLMLT_BUFFERS(SMALLMLT_BUFFER_ENUM) };
+#undef SMALLMLT_BUFFER_ENUM
+
+const char* buffer_name(Buffer b);
+
 struct PlannedBuffer {
-    std::string name;
-    std::uint64_t bytes; // as allocated (device_alloc_bytes)
-    bool burn_in_only;   // freed once the chains have started
+    Buffer kind;
+    std::uint32_t band = 0;   // of a FilmBand
+    std::uint64_t bytes;      // as allocated (device_alloc_bytes)
+    std::string name() const; // buffer_name, and a film band's number
 };
 
 struct MemoryPlan {
     std::vector<PlannedBuffer> buffers;
-    std::uint64_t total() const;                        // all at once: the peak of a render
-    std::uint64_t largest() const;                      // the biggest single buffer
-    std::uint64_t bytes(const std::string& name) const; // requested size (0 if empty)
-    std::uint64_t sum(bool chain_state) const;          // chain state buffers or the rest
-    std::uint64_t film() const;                         // the film's bands
-    std::uint32_t film_bands() const;                   // how many there are
+    std::uint64_t total() const;               // all at once: the peak of a render
+    std::uint64_t largest() const;             // the biggest single buffer
+    std::uint64_t bytes(Buffer kind) const;    // requested size (0 if empty)
+    std::uint64_t sum(bool chain_state) const; // chain state buffers or the rest
+    std::uint64_t film() const;                // the film's bands
+    std::uint32_t film_bands() const;          // how many there are
 };
 
 // What a render stores per chain and how many chains it has.

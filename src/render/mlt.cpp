@@ -86,11 +86,11 @@ MltRenderer::MltRenderer(const ClContext& cl, const DeviceScene& ds, const MltOp
       program_(cl.build(mlt_program_files(opt), program_defines(cl, ds, opt))),
       k_lum_(program_.p, "mlt_luminance"), k_init_(program_.p, "mlt_init"),
       k_step_(program_.p, "mlt_step"), k_owed_(program_.p, "mlt_owed"), scene_(cl, ds),
-      state_(cl, CL_MEM_READ_WRITE, plan_.bytes("state")),
-      values_(cl, CL_MEM_READ_WRITE, plan_.bytes("values")),
-      stats_(cl, CL_MEM_READ_WRITE, plan_.bytes("stats")),
-      picks_(cl, CL_MEM_READ_WRITE, plan_.bytes("picks")),
-      weight_(cl, CL_MEM_READ_WRITE, plan_.bytes("target weights")), cells_(target_one_cell()),
+      state_(cl, CL_MEM_READ_WRITE, plan_.bytes(Buffer::State)),
+      values_(cl, CL_MEM_READ_WRITE, plan_.bytes(Buffer::Values)),
+      stats_(cl, CL_MEM_READ_WRITE, plan_.bytes(Buffer::Stats)),
+      picks_(cl, CL_MEM_READ_WRITE, plan_.bytes(Buffer::Picks)),
+      weight_(cl, CL_MEM_READ_WRITE, plan_.bytes(Buffer::TargetWeights)), cells_(target_one_cell()),
       burn_in_film_(smallmlt::burn_in_film(derive_seed(opt.seed, kPurposePixel),
                                            derive_seed(opt.seed, kPurposeFilmOffset),
                                            std::uint32_t(pixels()), opt.threads)),
@@ -117,10 +117,10 @@ void MltRenderer::sample_starts(RankGroup& ranks) {
     const bool samples = !burn_in_parts_.count.empty();
     // Rounds before `first` only measure the two-stage target's weights.
     const std::uint32_t first = opt_.target == Target::TwoStage ? iters / 2 : 0;
-    ClBuffer lum(cl_, CL_MEM_READ_WRITE, plan_.bytes("luminance"));
-    ClBuffer scan(cl_, CL_MEM_READ_WRITE, plan_.bytes("scan"));
+    ClBuffer lum(cl_, CL_MEM_READ_WRITE, plan_.bytes(Buffer::Luminance));
+    ClBuffer scan(cl_, CL_MEM_READ_WRITE, plan_.bytes(Buffer::Scan));
     ClBuffer omc =
-        samples ? ClBuffer(cl_, CL_MEM_READ_WRITE, plan_.bytes("OMC samples")) : ClBuffer();
+        samples ? ClBuffer(cl_, CL_MEM_READ_WRITE, plan_.bytes(Buffer::OmcSamples)) : ClBuffer();
     BurnInPicker picker(cl_, program_.p, m);
     std::vector<float> host(m), host_omc(samples ? 8 * m : 0);
     std::uint64_t sum = 0;

@@ -29,7 +29,7 @@ PathTracer::PathTracer(const ClContext& cl, const DeviceScene& ds, std::uint64_t
     : cl_(cl), ds_(ds), seed_(seed), plan_(plan_pt(ds, max_alloc(cl, max_alloc_bytes))),
       program_(cl.build(pt_program_files(sampler), ds.layout.defines())),
       kernel_(program_.p, "pt_render"), own_scene_(std::in_place, cl, ds), scene_(*own_scene_),
-      stats_(cl, CL_MEM_READ_WRITE, plan_.bytes("stats")),
+      stats_(cl, CL_MEM_READ_WRITE, plan_.bytes(Buffer::Stats)),
       band_pixels_(
           film_bands(pixels(), kPtFilmPixelBytes, max_alloc(cl, max_alloc_bytes)).band_pixels),
       sample_offset_(sample_offset), sample_stride_(sample_stride) {
@@ -48,7 +48,7 @@ PathTracer::PathTracer(const ClContext& cl, const DeviceScene& ds, std::uint64_t
           cl.build(pt_program_files(PtSampler::Sobol),
                    ds.layout.defines() + split_defines(part.split) + "#define PT_OMC_PART 1\n")),
       kernel_(program_.p, "pt_render"), scene_(*part.scene),
-      stats_(cl, CL_MEM_READ_WRITE, plan_.bytes("stats")),
+      stats_(cl, CL_MEM_READ_WRITE, plan_.bytes(Buffer::Stats)),
       band_pixels_(omc_scratch_pixels(pixels())), sample_offset_(part.first_sample),
       sample_stride_(1), host_(3 * pixels(), 0.0) {
     bands_.emplace_back(cl_, CL_MEM_READ_WRITE, band_pixels_ * kPtFilmPixelBytes);
