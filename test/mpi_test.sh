@@ -44,19 +44,18 @@ truth time_exit [ "$rc" -eq 0 ]
 passes=$(printf '%s' "$out" | sed -n 's/.*passes per rank \([0-9 ]*\),.*/\1/p')
 truth time_same_pass one_value "$passes"
 truth time_image [ -s "$DIR/time.pfm" ]
-# SIGINT to rank 0 alone: every rank stops after its pass, rank 0 writes,
-# the job exits 3.
+# SIGINT to rank 0 alone, once rank 0 says every rank is set up: every rank
+# stops after its pass, rank 0 writes, the job exits 3.
 $MPIRUN -np 2 "$MPI_BIN" render $SMALL --time 60 --out "$DIR/int.pfm" > "$DIR/int.log" 2>&1 &
 job=$!
 rank0=""
-for _ in $(seq 1 100); do
+for _ in $(seq 1 600); do
     for p in $(pgrep -f "smallmlt-mpi render $SMALL --time 60"); do
         tr '\0' '\n' < "/proc/$p/environ" 2>/dev/null | grep -qx 'OMPI_COMM_WORLD_RANK=0' && rank0=$p
     done
-    [ -n "$rank0" ] && grep -q "threads: 256" "$DIR/int.log" && break
+    [ -n "$rank0" ] && grep -q "; rendering" "$DIR/int.log" && break
     sleep 0.1
 done
-sleep 1
 [ -n "$rank0" ] && kill -INT "$rank0"
 wait "$job"
 rc=$?

@@ -26,7 +26,7 @@ rm -f "$SCRATCH"/gtest-*.rc "$SCRATCH"/gtest-*.log "$SCRATCH"/rusticl.*
 # determinism, the film's overflow bound, the split's closed forms and the
 # stuck count.
 RUSTICL_TESTS=${RUSTICL_TESTS-SharedLayout.*:OpenCl.*:Depths/Furnace.*:DiffuseSampling.*:\
-LightSampling.*:DielectricSampling.*:LightPick.*:SmallStep.IntegerDelta*:SobolSampler.Every*:\
+LightSampling.*:DielectricSampling.*:LightPick.*:SmallStep.IntegerDelta*:SobolSampler.Every*:SobolSampler.ABounce*:\
 SobolSampler.Pairs*:SobolSampler.ImageIsPathTracingsImagePerBlock:\
 Proposals/ChainTarget.StatesFollowTheClosedFormMarginals/0:MltDeterminism.*:\
 Render.SameSeed*:Render.ManySamplesAtOnceEqualOneByOne:FilmOverflow.*:\

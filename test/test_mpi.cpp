@@ -16,30 +16,67 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <deque>
 #include <memory>
 
 using namespace smallmlt;
 
 namespace {
 
-// Rank `rank` of `size`, for building a rank's method; its collectives are
-// never called here.
-class FakeRank : public RankGroup {
+// What the collectives of R ranks rebuilt one after another give: each
+// rank's input to each call, and every call's answer once all R inputs are
+// known. A rank rebuilt before the others gave theirs (or after a call it
+// could not be answered) gets its own input back, and the replay is then
+// not complete: rebuilding again answers one call more.
+struct Exchange {
+    explicit Exchange(int ranks) : ranks(ranks) {}
+    int ranks;
+    std::vector<std::vector<std::vector<double>>> inputs; // [call][rank]; empty: not given
+    bool complete = true;
+};
+
+// Rank `rank` of the exchange's ranks, for building a rank's method: any
+// and all are the OR and AND over ranks, sum_all their sum in rank order
+// (exact for two ranks, as MPI's is); sum_to_root and gather are never
+// called here.
+class ReplayRank : public RankGroup {
   public:
-    FakeRank(int rank, int size) : rank_(rank), size_(size) {}
+    ReplayRank(int rank, Exchange& ex) : rank_(rank), ex_(ex) {}
     int rank() const override { return rank_; }
-    int size() const override { return size_; }
+    int size() const override { return ex_.ranks; }
     int local_rank() const override { return rank_; }
     std::string host() const override { return "test"; }
-    bool any(bool mine) override { return mine; }
-    bool all(bool mine) override { return mine; }
+    bool any(bool mine) override { return combine({double(mine)}, true)[0] > 0; }
+    bool all(bool mine) override { return combine({double(mine)}, false)[0] > 0; }
     void sum_to_root(std::vector<std::uint64_t>&) override {}
     void sum_to_root(std::vector<double>&) override {}
-    void sum_all(std::vector<double>&) override {}
+    void sum_all(std::vector<double>& v) override { v = combine(v, true); }
     std::vector<std::string> gather(const std::string& mine) override { return {mine}; }
 
   private:
-    int rank_, size_;
+    // The sum (or, for `sum` false, the minimum) over ranks of call `calls_`.
+    std::vector<double> combine(const std::vector<double>& mine, bool sum) {
+        std::size_t call = calls_++;
+        if (ex_.inputs.size() <= call) ex_.inputs.resize(call + 1);
+        std::vector<std::vector<double>>& in = ex_.inputs[call];
+        in.resize(std::size_t(ex_.ranks));
+        if (answered_) in[std::size_t(rank_)] = mine; // computed from answers only
+        bool known = std::all_of(in.begin(), in.end(), [](const auto& v) { return !v.empty(); });
+        answered_ = answered_ && known;
+        if (!answered_) {
+            ex_.complete = false;
+            return mine;
+        }
+        std::vector<double> out = in[0];
+        for (std::size_t r = 1; r < in.size(); ++r)
+            for (std::size_t k = 0; k < out.size(); ++k)
+                out[k] = sum ? out[k] + in[r][k] : std::min(out[k], in[r][k]);
+        return out;
+    }
+    int rank_;
+    Exchange& ex_;
+    std::size_t calls_ = 0;
+    bool answered_ = true;
 };
 
 const char* kMpirun = "OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 timeout 120 "
@@ -78,53 +115,74 @@ RenderOptions parse_render(const std::string& args) {
     return parse_command_line(int(argv.size()), argv.data()).render;
 }
 
-// The image of `ranks` ranks rebuilt here, and b of the union of their
-// samples (MLT only; 0 for PT).
+// The image of the job's ranks rebuilt here, rank r from rank_args[r], and
+// b of the union of their samples (MLT only; 0 for PT). Rebuilt again until
+// every collective of every rank had its answer (at most one pass more than
+// the calls a rank makes).
 struct Rebuilt {
     Image image;
     double b_union = 0;
 };
 
-Rebuilt rebuild(const std::string& args, int ranks) {
-    RenderOptions o = parse_render(args + " --quiet");
-    Scene scene = load_scene(o.scene);
-    scene.width = *o.width;
-    scene.height = *o.height;
-    DeviceScene ds = prepare_scene(scene);
-    Tally sum;
-    std::unique_ptr<Integrator> first;
-    double b_sum = 0, b_n = 0;
-    for (int r = 0; r < ranks; ++r) {
-        FakeRank me(r, ranks);
-        std::unique_ptr<Integrator> m = make_integrator(o, test::cl(), ds, me);
-        m->prepare(me);
-        std::uint64_t units = m->units_for_spp(*o.spp, r, ranks);
-        for (std::uint64_t done = 0; done < units; done += 7)
-            m->advance(std::uint32_t(std::min<std::uint64_t>(7, units - done)));
-        Tally t = m->tally();
-        if (r == 0) sum = t;
-        for (std::size_t i = 0; r > 0 && i < t.ints.size(); ++i)
-            sum.ints[i] += t.ints[i];
-        for (std::size_t i = 0; r > 0 && i < t.reals.size(); ++i)
-            sum.reals[i] += t.reals[i];
-        if (auto* mlt = dynamic_cast<MltRenderer*>(m.get())) {
-            // b of this rank's own samples, weighted by their number.
-            MltStats s = mlt->stats();
-            double n = double(std::uint64_t(mlt->chains()) * o.burn_in_iters + s.large);
-            b_sum += mlt->b() * n;
-            b_n += n;
-        }
-        if (r == 0) first = std::move(m);
+Rebuilt rebuild(const std::vector<std::string>& rank_args) {
+    const int ranks = int(rank_args.size());
+    std::deque<DeviceScene> scenes; // the methods keep references to them
+    std::vector<RenderOptions> opts;
+    for (const std::string& args : rank_args) {
+        opts.push_back(parse_render(args + " --quiet"));
+        Scene scene = load_scene(opts.back().scene);
+        scene.width = *opts.back().width;
+        scene.height = *opts.back().height;
+        if (opts.back().depth) scene.depth = *opts.back().depth;
+        scene.roulette = opts.back().roulette;
+        scenes.push_back(prepare_scene(scene));
     }
-    Rebuilt out;
-    out.image = first->image_from(sum);
-    out.b_union = b_n > 0 ? b_sum / b_n : 0;
-    return out;
+    Exchange ex(ranks);
+    for (int pass = 0;; ++pass) {
+        ex.complete = true;
+        Tally sum;
+        std::unique_ptr<Integrator> first;
+        double b_sum = 0, b_n = 0;
+        for (int r = 0; r < ranks; ++r) {
+            const RenderOptions& o = opts[std::size_t(r)];
+            ReplayRank me(r, ex);
+            std::unique_ptr<Integrator> m =
+                make_integrator(o, test::cl(), scenes[std::size_t(r)], me);
+            m->prepare(me);
+            std::uint64_t units = m->units_for_spp(*o.spp, r, ranks);
+            for (std::uint64_t done = 0; done < units; done += 7)
+                m->advance(std::uint32_t(std::min<std::uint64_t>(7, units - done)));
+            Tally t = m->tally();
+            if (r == 0) sum = t;
+            for (std::size_t i = 0; r > 0 && i < t.ints.size(); ++i)
+                sum.ints[i] += t.ints[i];
+            for (std::size_t i = 0; r > 0 && i < t.reals.size(); ++i)
+                sum.reals[i] += t.reals[i];
+            if (auto* mlt = dynamic_cast<MltRenderer*>(m.get())) {
+                // b of this rank's own samples, weighted by their number.
+                MltStats s = mlt->stats();
+                double n = double(std::uint64_t(mlt->chains()) * o.burn_in_iters + s.large);
+                b_sum += mlt->b() * n;
+                b_n += n;
+            }
+            if (r == 0) first = std::move(m);
+        }
+        if (!ex.complete && pass < 4) continue;
+        EXPECT_TRUE(ex.complete) << "collectives left without an answer";
+        Rebuilt out;
+        out.image = first->image_from(sum);
+        out.b_union = b_n > 0 ? b_sum / b_n : 0;
+        return out;
+    }
 }
 
-Image run_job(const std::string& args, int ranks, const std::string& out) {
-    std::string cmd = std::string(kMpirun) + std::to_string(ranks) + " " + mpi_bin() + " render " +
-                      args + " --quiet --out " + out + " < /dev/null > " + out + ".log 2>&1";
+// The job: `mpirun` with rank r running `smallmlt-mpi render rank_args[r]`.
+Image run_job(const std::vector<std::string>& rank_args, const std::string& out) {
+    std::string cmd = kMpirun;
+    for (std::size_t r = 0; r < rank_args.size(); ++r)
+        cmd += (r ? " : -np 1 " : "1 ") + mpi_bin() + " render " + rank_args[r] +
+               " --quiet --out " + out;
+    cmd += " < /dev/null > " + out + ".log 2>&1";
     int rc = std::system(cmd.c_str());
     EXPECT_EQ(rc, 0) << cmd;
     return read_image(out);
@@ -132,32 +190,97 @@ Image run_job(const std::string& args, int ranks, const std::string& out) {
 
 } // namespace
 
-// MLT on 2 and 3 ranks (chains of each rank's seed, the work shared
-// evenly), and PT on 3 (rank r renders samples r, r + 3, ...).
+// Every option whose data goes through a collective, on 2 or 3 ranks:
+// - MLT (chains of each rank's seed, the work shared evenly): the film and
+//   b's sums in the tallies' integers, the burn-in's squares in its reals;
+//   with Kelemen's weights and a split, the OMC part's samples and the
+//   burn-in's in both;
+// - --split auto, rank 0 on the furnace (its vote: no chains) and rank 1 on
+//   cornell-water (yes): every rank takes the AND (all), renders by
+//   path tracing alone and adds the burn-in's whole paths to its reals;
+// - --target two-stage: the first half of every rank's burn-in, summed over
+//   ranks (sum_all), fixes one set of cells and weights: 4 cells from 4,096
+//   samples, where one rank's 2,048 would give 1 (2 ranks, whose sum is
+//   exact in either order);
+// - PT (rank r renders samples r, r + R, ...): the per-pixel sums in the
+//   reals, the samples in the integers, with Sobol and random samples.
 TEST(MpiRender, RanksGiveTheImageOfTheirKeys) {
     std::string dir = test::scratch_dir("mpi");
     struct Case {
-        std::string args;
-        int ranks;
-        bool mean_is_b; // no split: the image's mean is b
+        std::vector<std::string> rank_args;
+        bool mean_is_b; // no split, expected values, luminance target: the image's mean is b
     };
-    const std::string mlt = "scenes/cornell.scene --width 24 --height 24 --threads 256 --spp 6 "
-                            "--burn-in-iters 4 --seed 9";
+    auto ranks = [](const std::string& args, int n) { return std::vector<std::string>(n, args); };
+    const std::string film = " --width 24 --height 24 --threads 256 --spp 6 --seed 9",
+                      mlt = "scenes/cornell.scene" + film + " --burn-in-iters 4";
     const std::string pt = "scenes/cornell-water.scene --method pt --width 24 --height 24 --spp 7";
-    // The split's OMC part and the burn-in's sums go into the tallies too.
-    for (const Case& c : {Case{mlt + " --split none --weights expected", 2, true},
-                          Case{mlt + " --split direct", 3, false}, Case{pt, 3, false}}) {
-        std::string out = dir + "/np" + std::to_string(c.ranks) + ".pfm";
-        Image job = run_job(c.args, c.ranks, out);
-        Rebuilt here = rebuild(c.args, c.ranks);
-        EXPECT_EQ(job.rgb, here.image.rgb) << c.args << " on " << c.ranks << " ranks";
+    const std::string vote = film + " --burn-in-iters 4 --split auto";
+    const Case cases[] = {
+        {ranks(mlt + " --split none --weights expected", 2), true},
+        {ranks(mlt + " --split direct --weights kelemen", 3), false},
+        {{"scenes/furnace.scene --depth 4" + vote, "scenes/cornell-water.scene" + vote}, false},
+        {ranks("scenes/cornell.scene" + film +
+                   " --burn-in-iters 16 --split none --target two-stage",
+               2),
+         false},
+        {ranks(pt, 3), false},
+        {ranks(pt + " --sampler random", 2), false},
+    };
+    int k = 0;
+    for (const Case& c : cases) {
+        std::string out = dir + "/case" + std::to_string(k++) + ".pfm", what = c.rank_args.back();
+        Image job = run_job(c.rank_args, out);
+        Rebuilt here = rebuild(c.rank_args);
+        EXPECT_EQ(job.rgb, here.image.rgb) << what << " on " << c.rank_args.size() << " ranks";
         if (c.mean_is_b) {
             // The image's mean is b of the summed samples: the union's.
-            std::printf("%d ranks: image mean %.7f, b of the union %.7f\n", c.ranks,
+            std::printf("%zu ranks: image mean %.7f, b of the union %.7f\n", c.rank_args.size(),
                         job.mean_luminance(), here.b_union);
             EXPECT_NEAR(job.mean_luminance(), here.b_union, 1e-3 * here.b_union);
         }
     }
+}
+
+// The two-stage target of 2 ranks rebuilt here: every rank's cells and
+// weights are those of the union of the ranks' samples that fix it (the
+// first half of each burn-in), not of its own: 4 cells from 2 x 2,048
+// samples, where 2,048 would make 1.
+TEST(MpiRender, TwoStageRanksFixOneTargetFromAllTheirSamples) {
+    const std::uint32_t w = 24, h = 24;
+    DeviceScene ds = prepare_scene(test::scene("cornell", int(w), int(h)));
+    MltOptions opt;
+    opt.threads = 256;
+    opt.burn_in_iters = 16;
+    opt.target = Target::TwoStage;
+    Exchange ex(2);
+    std::vector<std::vector<float>> weights;
+    for (int pass = 0; pass < 2; ++pass) { // the second has every rank's sums
+        ex.complete = true;
+        weights.clear();
+        for (int r = 0; r < 2; ++r) {
+            ReplayRank me(r, ex);
+            opt.seed = rank_seed(9, r);
+            MltRenderer mlt(test::cl(), ds, opt);
+            mlt.sample_starts(me);
+            weights.emplace_back(mlt.weights().bytes() / sizeof(float));
+            mlt.weights().read(test::cl(), weights.back().data());
+        }
+    }
+    ASSERT_TRUE(ex.complete);
+    ASSERT_EQ(ex.inputs.size(), 1u) << "one sum over ranks fixes the target";
+    std::vector<double> sums = ex.inputs[0][0];
+    for (std::size_t k = 0; k < sums.size(); ++k)
+        sums[k] += ex.inputs[0][1][k];
+    ASSERT_EQ(sums.back(), 2.0 * opt.threads * opt.burn_in_iters / 2) << "samples that fix it";
+    TargetCells cells = target_cells(w, h, std::uint64_t(sums.back()));
+    ASSERT_EQ(target_cell_count(cells, h), 4u);
+    sums.pop_back();
+    std::vector<float> expected = target_weights(cells, w, h, sums);
+    expected.resize(weights[0].size(), 1.0f);
+    std::printf("weights of the 4 cells: %.3f %.3f %.3f %.3f\n", expected[0], expected[1],
+                expected[2], expected[3]);
+    for (int r = 0; r < 2; ++r)
+        EXPECT_EQ(weights[std::size_t(r)], expected) << "rank " << r;
 }
 
 // One rank renders what smallmlt does, bit for bit.
@@ -165,28 +288,32 @@ TEST(MpiRender, OneRankIsSmallmlt) {
     std::string dir = test::scratch_dir("mpi1");
     const std::string args = "scenes/cornell.scene --width 16 --height 16 --threads 256 --spp 4 "
                              "--burn-in-iters 4 --seed 4";
-    Image job = run_job(args, 1, dir + "/np1.pfm");
+    Image job = run_job({args}, dir + "/np1.pfm");
     std::string cmd = smallmlt_bin() + " render " + args + " --quiet --out " + dir + "/one.pfm";
     ASSERT_EQ(std::system(cmd.c_str()), 0);
     EXPECT_EQ(job.rgb, read_image(dir + "/one.pfm").rgb);
 }
 
-// PT's ranks render every sample of one process once: the 3-rank image is
-// the single process's within the float rounding of its per-pixel sums.
+// PT's ranks render every sample of one process once, with either sampler:
+// the 3-rank image is the single process's within the float rounding of
+// its per-pixel sums.
 TEST(MpiRender, PtRanksRenderEverySampleOnce) {
     std::string dir = test::scratch_dir("mpi-pt");
-    const std::string args =
-        "scenes/cornell-water.scene --method pt --width 24 --height 24 --spp 7";
-    Image job = run_job(args, 3, dir + "/np3.pfm");
-    std::string cmd = smallmlt_bin() + " render " + args + " --quiet --out " + dir + "/one.pfm";
-    ASSERT_EQ(std::system(cmd.c_str()), 0);
-    Image one = read_image(dir + "/one.pfm");
-    double worst = 0;
-    for (std::size_t i = 0; i < one.rgb.size(); ++i)
-        worst = std::max(worst, std::fabs(double(job.rgb[i]) - one.rgb[i]) /
-                                    std::max(1e-3, double(one.rgb[i])));
-    std::printf("largest relative difference to one process: %.3g\n", worst);
-    EXPECT_LT(worst, 1e-5);
+    for (const char* sampler : {"sobol", "random"}) {
+        const std::string args = "scenes/cornell-water.scene --method pt --width 24 --height 24 "
+                                 "--spp 7 --sampler " +
+                                 std::string(sampler);
+        Image job = run_job(std::vector<std::string>(3, args), dir + "/np3.pfm");
+        std::string cmd = smallmlt_bin() + " render " + args + " --quiet --out " + dir + "/one.pfm";
+        ASSERT_EQ(std::system(cmd.c_str()), 0);
+        Image one = read_image(dir + "/one.pfm");
+        double worst = 0;
+        for (std::size_t i = 0; i < one.rgb.size(); ++i)
+            worst = std::max(worst, std::fabs(double(job.rgb[i]) - one.rgb[i]) /
+                                        std::max(1e-3, double(one.rgb[i])));
+        std::printf("%s: largest relative difference to one process: %.3g\n", sampler, worst);
+        EXPECT_LT(worst, 1e-5) << sampler;
+    }
 }
 
 // Keys: rank 0 keeps the seed, every rank's is its own; work is shared to

@@ -102,6 +102,33 @@ inline std::vector<cl_float4> lazy_eager_committed(const MltRenderer& mlt, const
     return f;
 }
 
+// Makes chains 0, every, 2 every, ... of `mlt` (prepared) stay where they
+// are from now on, whatever the seed: their G(x) becomes 1e30 (grey), which
+// no path comes near, so every proposal's a = I(y)/I(x) is below 1e-20,
+// the stay weight K - sum a rounds to K in float, and the step's choice
+// u < K never passes it. Returns the chains held.
+inline std::vector<std::uint32_t> hold_chains(const MltRenderer& mlt, std::uint32_t every) {
+    std::vector<ChainValue> v(mlt.chains());
+    mlt.values().read(cl(), v.data());
+    std::vector<std::uint32_t> held;
+    for (std::uint32_t c = 0; c < mlt.chains(); c += every) {
+        v[c].rgb[0] = v[c].rgb[1] = v[c].rgb[2] = 1e30f;
+        held.push_back(c);
+    }
+    mlt.values().write(cl(), v.data());
+    return held;
+}
+
+// The current run of rejections of each chain of `mlt`.
+inline std::vector<std::uint32_t> chain_runs(const MltRenderer& mlt) {
+    std::vector<ChainValue> v(mlt.chains());
+    mlt.values().read(cl(), v.data());
+    std::vector<std::uint32_t> runs;
+    for (const ChainValue& x : v)
+        runs.push_back(x.meta >> CHAIN_RUN_SHIFT);
+    return runs;
+}
+
 // How far an MLT image's mean luminance may stray from b by the film's
 // rounding alone (b cancels from it): 1e-6 for the 2^-24 rounding of
 // weights, plus 5 standard deviations of the film's stochastic rounding:

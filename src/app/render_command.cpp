@@ -229,6 +229,12 @@ int run_render(const RenderOptions& o, RankGroup& ranks) {
     RenderSetup s;
     set_up_every_rank(o, ranks, s);
     double setup_s = seconds_since(t_setup);
+    // Every rank is set up, its kernels built; the render (MLT: its burn-in
+    // first) begins. Flushed, so that a script can wait for it.
+    if (!o.quiet && ranks.rank() == 0) {
+        std::printf("set up in %.2f s; rendering\n", setup_s);
+        std::fflush(stdout);
+    }
 
     Progress progress(!o.quiet && ranks.rank() == 0);
     LoopLimits limits{o.spp, o.time_s, std::min(kPassSeconds, o.log_interval_s)};

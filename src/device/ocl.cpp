@@ -1,6 +1,7 @@
 #include "device/ocl.hpp"
 
 #include "base/error.hpp"
+#include "base/interrupt.hpp"
 #include "device/kernel_sources.hpp"
 
 #include <algorithm>
@@ -242,6 +243,11 @@ cl_program ClContext::build(const std::vector<std::string>& files,
     cl_program prog = clCreateProgramWithSource(ctx_, 1, &text, nullptr, &err);
     CL_CHECK(err);
     err = clBuildProgram(prog, 1, &info_.id, "-cl-std=CL1.2", nullptr, nullptr);
+    // The compiler (LLVM, as PoCL runs it) deletes its temporary files on
+    // SIGINT and SIGTERM, so a build under way at the first signal fails:
+    // it is built again, and the render stops where signals are answered.
+    if (err == CL_BUILD_PROGRAM_FAILURE && interrupt_requested())
+        err = clBuildProgram(prog, 1, &info_.id, "-cl-std=CL1.2", nullptr, nullptr);
     if (err != CL_SUCCESS) {
         std::size_t n = 0;
         clGetProgramBuildInfo(prog, info_.id, CL_PROGRAM_BUILD_LOG, 0, nullptr, &n);

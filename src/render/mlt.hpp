@@ -191,7 +191,8 @@ class MltRenderer : public Integrator {
     // For tests: the raw buffers.
     const ClBuffer& state() const { return state_; }
     const ClBuffer& values() const { return values_; }
-    const ClBuffer& picks() const { return picks_; } // (round, index) per chain
+    const ClBuffer& picks() const { return picks_; }    // (round, index) per chain
+    const ClBuffer& weights() const { return weight_; } // the target's w per cell
     cl_program program() const { return program_.p; }
 
   private:
