@@ -12,12 +12,6 @@
 namespace smallmlt {
 
 constexpr std::uint32_t kDefaultSpp = 16;
-// Defaults chosen by the benches of doc/RESULTS.md: Kelemen's weights, with
-// which large steps pay more often than with expected values alone.
-constexpr bool kDefaultKelemen = true;
-constexpr float kDefaultLargeStepKelemen = 0.3f;  // with burn-in and Kelemen's weights
-constexpr float kDefaultLargeStepBurnIn = 0.1f;   // with burn-in and expected values
-constexpr float kDefaultLargeStepNoBurnIn = 0.5f; // the paper's baseline without
 
 enum class Method { Pt, Mlt };
 
