@@ -124,8 +124,8 @@ TEST(Options, BudgetReadsTheSharedFlagsAsRenderDoes) {
                               "--profile adreno-650 --device 1";
     const RenderOptions r = parse("render s.scene" + flags).render;
     const BudgetOptions b = parse("budget s.scene" + flags).budget;
-    for (const JobOptions* o :
-         {static_cast<const JobOptions*>(&r), &static_cast<const JobOptions&>(b)}) {
+    const JobOptions* both[] = {&r, &b};
+    for (const JobOptions* o : both) {
         EXPECT_EQ(o->threads, 512u);
         EXPECT_EQ(o->mlt.proposals, 4u);
         EXPECT_EQ(o->mlt.split, Split::Direct);
