@@ -481,7 +481,7 @@ TEST(OmcKeys, DistinctOverTheWholeCommandLineRange) {
 // burn_in_film_sample names for round x threads + index).
 TEST(BurnIn, ChainsStartOnThePathsTheirPicksFound) {
     DeviceScene ds = prepare_scene(test::scene("cornell-water", 32, 32));
-    MltOptions opt;
+    MltOptions opt = test::plain_mlt();
     opt.threads = 1000;
     opt.burn_in_iters = 7;
     opt.extra_files = {"test/cl/probe_mlt.cl"};
@@ -520,7 +520,7 @@ TEST(BurnIn, RemovesMostOfTheStartupBias) {
     Image ref = test::render_pt(ds, 31, 2048);
     double err[2];
     for (int burn = 0; burn < 2; ++burn) {
-        MltOptions opt;
+        MltOptions opt = test::plain_mlt();
         opt.threads = 4096;
         opt.seed = 3;
         opt.burn_in = burn == 1;

@@ -75,7 +75,7 @@ TEST(BurnInFilm, EveryPixelGetsItsShare) {
 TEST(BurnInFilm, DeviceSamplesArePixelsSobolPoints) {
     for (auto [w, h] : {std::pair{13u, 7u}, std::pair{8u, 4u}}) {
         DeviceScene ds = prepare_scene(test::scene("cornell", int(w), int(h)));
-        MltOptions opt;
+        MltOptions opt = test::plain_mlt();
         opt.threads = 64;
         opt.extra_files = {"test/cl/probe_mlt.cl"};
         MltRenderer mlt(test::cl(), ds, opt);
@@ -118,7 +118,7 @@ TEST(BurnInFilm, DeviceSamplesArePixelsSobolPoints) {
 // begins each pixel's sequence after the burn-in's numbers.
 TEST(BurnInFilm, RenderBurnInLandsWhereExpected) {
     DeviceScene ds = prepare_scene(test::scene("cornell", 13, 7));
-    MltOptions opt;
+    MltOptions opt = test::plain_mlt();
     opt.threads = 256;
     opt.burn_in_iters = 3;
     opt.split = Split::Visible;

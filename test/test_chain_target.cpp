@@ -338,7 +338,7 @@ TEST(ChainTargetMath, ClosedFormsEqualGridSums) {
 // for bit (probe_lazy_eager).
 TEST(ChainTargetLazy, CommitStoresExactlyTheNumbersRead) {
     const DeviceScene ds = test::layout_only_scene(target_features(), 8, 8);
-    MltOptions opt;
+    MltOptions opt = test::plain_mlt();
     opt.threads = 4096;
     opt.seed = 3;
     opt.evaluator = "test/cl/eval_target.cl";
@@ -393,7 +393,7 @@ TEST_P(ChainTarget, StatesFollowTheClosedFormMarginals) {
     const DeviceScene ds = test::layout_only_scene(target_features(), 8, 8);
     const SampleLayout& l = ds.layout;
     const KnownTarget tg(l);
-    MltOptions opt;
+    MltOptions opt = test::plain_mlt();
     opt.proposals = cc.proposals;
     opt.threads = cc.chains * cc.proposals;
     opt.large_step = 0.05f;
@@ -580,7 +580,7 @@ TEST_P(ChainTargetSplat, ImageMatchesThePerPixelIntegral) {
     auto t0 = std::chrono::steady_clock::now();
     double acceptance = 0, b_error = 0;
     for (std::uint32_t r = 0; r < replicas; ++r) {
-        MltOptions opt;
+        MltOptions opt = test::plain_mlt();
         opt.proposals = sc.proposals;
         opt.threads = sc.threads;
         opt.large_step = 0.05f;

@@ -80,7 +80,7 @@ TEST(FilmPlan, EveryPassStaysBelowTwoTo32) {
 // nothing owed, which the bound assumes.
 TEST(FilmOverflow, EverySplatOnOnePixelIsExact) {
     DeviceScene ds = coloured_furnace(1, 0, 0, 1);
-    MltOptions opt;
+    MltOptions opt = test::plain_mlt();
     opt.threads = 4096;
     opt.film_pass_mutations = 1u << 16;
     opt.burn_in_iters = 2;
@@ -117,7 +117,7 @@ TEST(FilmOverflow, EverySplatOnOnePixelIsExact) {
 TEST(FilmRounding, DimChannelsAreNotBiased) {
     const float red = 3e-5f;
     DeviceScene ds = coloured_furnace(8, red, 0, 1);
-    MltOptions opt;
+    MltOptions opt = test::plain_mlt();
     opt.threads = 4096;
     opt.burn_in_iters = 2;
     opt.seed = 22;
@@ -151,7 +151,7 @@ TEST(FilmAtomics, ThirtyTwoBitFilmEqualsSixtyFourWithinRounding) {
     double unit = 0, b = 0;
     std::uint32_t drains = 0;
     for (int wide = 0; wide < 2; ++wide) {
-        MltOptions opt;
+        MltOptions opt = test::plain_mlt();
         opt.threads = 2048;
         opt.film_pass_mutations = 8192; // drains every 4 steps
         opt.seed = 31;
@@ -198,7 +198,7 @@ TEST(FilmBands, BandsChangeNothing) {
     EXPECT_EQ(plan_mlt(ds, ChainShape{1024, 1, false, false}, 64, banded).film_bands(), 4u);
     std::vector<float> mlt[2], pt[2];
     for (int split = 0; split < 2; ++split) {
-        MltOptions opt;
+        MltOptions opt = test::plain_mlt();
         opt.threads = 1024;
         opt.film_pass_mutations = 4096;
         opt.burn_in_iters = 2;
@@ -215,7 +215,7 @@ TEST(FilmBands, BandsChangeNothing) {
     }
     EXPECT_EQ(mlt[0], mlt[1]);
     EXPECT_EQ(pt[0], pt[1]);
-    MltOptions five;
+    MltOptions five = test::plain_mlt();
     five.threads = 1024;
     five.max_alloc_bytes = 320 * 12;
     try {

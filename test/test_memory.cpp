@@ -30,7 +30,7 @@ std::uint64_t mlt_peak(const DeviceScene& ds, std::uint32_t threads, std::uint32
     std::uint64_t before = cl.live_bytes();
     cl.reset_peak();
     {
-        MltOptions opt;
+        MltOptions opt = test::plain_mlt();
         opt.threads = threads;
         opt.proposals = proposals;
         opt.burn_in_iters = 2;

@@ -28,7 +28,7 @@ std::uint32_t bits_of(const SampleLayout& l, std::uint32_t d) {
 
 void check_roundtrip(const SceneFeatures& f, bool float32) {
     DeviceScene ds = test::layout_only_scene(f, 4, 4);
-    MltOptions opt;
+    MltOptions opt = test::plain_mlt();
     opt.threads = 16;
     opt.float32_states = float32;
     opt.extra_files = {kProbeFile};
@@ -76,7 +76,7 @@ TEST(MltPacking, StateSizeFollowsTheLayout) {
 // bit for bit), and committing the proposal stores exactly that path.
 TEST(MltLazy, LazyProposalEqualsEagerAndCommitStoresIt) {
     DeviceScene ds = prepare_scene(test::scene("cornell-water", 32, 32));
-    MltOptions opt;
+    MltOptions opt = test::plain_mlt();
     opt.threads = 1024;
     opt.extra_files = {kProbeFile};
     MltRenderer mlt(test::cl(), ds, opt);
@@ -121,7 +121,7 @@ class MltSampler : public ::testing::TestWithParam<std::uint32_t> {};
 TEST_P(MltSampler, ChainStatesFollowAKnownTarget) {
     const int bins = 16;
     DeviceScene ds = test::layout_only_scene({}, bins, bins);
-    MltOptions opt;
+    MltOptions opt = test::plain_mlt();
     opt.proposals = GetParam();
     opt.threads = (opt.proposals <= 4 ? 16384 : 4096) * opt.proposals;
     opt.large_step = 0.3f;
@@ -174,7 +174,7 @@ void check_splat_image(Target target, bool kelemen = false) {
     DeviceScene ds = test::layout_only_scene({}, bins, bins);
     std::vector<double> sum(bins * bins, 0.0), sum2(bins * bins, 0.0);
     for (int r = 0; r < replicas; ++r) {
-        MltOptions opt;
+        MltOptions opt = test::plain_mlt();
         opt.threads = 1024;
         opt.large_step = 0.3f;
         opt.seed = 100 + r;
@@ -250,7 +250,7 @@ TEST(MltPrecision, PackedAndFloat32StatesAgreeWithinNoise) {
     double sum[2][4] = {}, sum2[2][4] = {};
     for (int build = 0; build < 2; ++build)
         for (int r = 0; r < replicas; ++r) {
-            MltOptions opt;
+            MltOptions opt = test::plain_mlt();
             opt.threads = 2048;
             opt.seed = 300 + r + 50 * build;
             opt.burn_in_iters = 8;
@@ -289,7 +289,7 @@ TEST(MltDeterminism, SameSeedSameImage) {
     DeviceScene ds = prepare_scene(test::scene("cornell-glass", 24, 24));
     std::vector<float> images[2];
     for (auto& img : images) {
-        MltOptions opt;
+        MltOptions opt = test::plain_mlt();
         opt.threads = 2048;
         opt.film_pass_mutations = 4096;
         opt.seed = 77;
@@ -331,7 +331,7 @@ TEST(MltStaySplat, GatheredStaysEqualEagerSplatsWithinRounding) {
         Image img[2];
         MltStats stats[2];
         for (int eager = 0; eager < 2; ++eager) {
-            MltOptions opt;
+            MltOptions opt = test::plain_mlt();
             opt.threads = 1024;
             opt.large_step = 0.1f;
             opt.seed = 7;
@@ -377,7 +377,7 @@ TEST(MltStaySplat, ReadingTheImageChangesNothing) {
     DeviceScene ds = prepare_scene(test::scene("cornell", 24, 24));
     std::vector<float> images[2];
     for (int reads = 0; reads < 2; ++reads) {
-        MltOptions opt;
+        MltOptions opt = test::plain_mlt();
         opt.threads = 1024;
         opt.film_pass_mutations = 3072;
         opt.seed = 8;

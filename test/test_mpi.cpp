@@ -161,7 +161,7 @@ Rebuilt rebuild(const std::vector<std::string>& rank_args) {
             if (auto* mlt = dynamic_cast<MltRenderer*>(m.get())) {
                 // b of this rank's own samples, weighted by their number.
                 MltStats s = mlt->stats();
-                double n = double(std::uint64_t(mlt->chains()) * o.burn_in_iters + s.large);
+                double n = double(std::uint64_t(mlt->chains()) * o.mlt.burn_in_iters + s.large);
                 b_sum += mlt->b() * n;
                 b_n += n;
             }

@@ -34,7 +34,7 @@ double furnace_mean(int depth) {
 TEST(BEstimate, FurnaceBIsTheAnalyticMean) {
     for (int depth : {2, 4}) {
         DeviceScene ds = prepare_scene(test::scene("furnace", 16, 16, depth));
-        MltOptions opt;
+        MltOptions opt = test::plain_mlt();
         opt.threads = 8192;
         opt.burn_in_iters = 32;
         opt.seed = 5;
@@ -60,7 +60,7 @@ TEST(BEstimate, FurnaceBIsTheAnalyticMean) {
 TEST(BEstimate, ImageMeanIsBByConstruction) {
     DeviceScene ds = prepare_scene(test::scene("cornell-water", 24, 24));
     for (std::uint32_t k : {1u, 4u}) {
-        MltOptions opt;
+        MltOptions opt = test::plain_mlt();
         opt.threads = 2048;
         opt.proposals = k;
         opt.burn_in_iters = 4;
@@ -82,7 +82,7 @@ TEST(BEstimate, ImageMeanIsBByConstruction) {
 // mean. Leaving the large steps out, or counting them twice, fails it.
 TEST(BEstimate, LargeStepsKeepBConverging) {
     DeviceScene ds = prepare_scene(test::scene("furnace", 16, 16, 4));
-    MltOptions opt;
+    MltOptions opt = test::plain_mlt();
     opt.threads = 256;
     opt.burn_in_iters = 4;
     opt.large_step = 0.5f;

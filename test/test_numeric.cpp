@@ -52,7 +52,7 @@ TEST(Numeric, PathTracerDropsAndCountsNonFiniteSamples) {
 
 TEST(Numeric, MltDropsAndCountsNonFiniteSamples) {
     DeviceScene ds = cornell_with_nan_wall();
-    MltOptions opt;
+    MltOptions opt = test::plain_mlt();
     opt.threads = 1024;
     opt.seed = 5;
     MltRenderer mlt(test::cl(), ds, opt);
@@ -89,7 +89,7 @@ TEST(Numeric, BoxedInLightRendersBlack) {
     Image img = pt.image();
     EXPECT_EQ(nonfinite_pixels(img), 0u);
     EXPECT_EQ(img.mean_luminance(), 0.0);
-    MltOptions opt;
+    MltOptions opt = test::plain_mlt();
     opt.threads = 256;
     MltRenderer mlt(test::cl(), ds, opt);
     mlt.prepare();
@@ -108,7 +108,7 @@ TEST(Numeric, UncertainBIsReportedAndTheMeanStillTracksPt) {
     DeviceScene ds = prepare_scene(test::scene("ajar", 32, 32));
     double pt_mean = test::render_pt(ds, 11, 1024).mean_luminance();
     for (std::uint32_t iters : {4u, 16u, 64u}) {
-        MltOptions opt;
+        MltOptions opt = test::plain_mlt();
         opt.threads = 1024;
         opt.burn_in_iters = iters;
         opt.large_step = 0.1f;

@@ -30,7 +30,7 @@ std::string error_of(const std::function<void()>& f) {
 
 TEST(DeviceProfiles, EveryProfileRendersWithinItsMemoryAsTheDeviceDoes) {
     DeviceScene ds = prepare_scene(test::scene("cornell-water", 32, 32));
-    MltOptions opt;
+    MltOptions opt = test::plain_mlt();
     opt.threads = 1024;
     opt.burn_in_iters = 4;
     opt.film_pass_mutations = 4096;

@@ -129,10 +129,10 @@ TEST_P(RenderBlocks, MltMatchesPathTracingPerBlock) {
     std::vector<double> errors;
     double scale_error = 0; // largest |image mean / b - 1| / its rounding tolerance
     for (int r = 0; r < c.replicas; ++r) {
-        MltOptions opt;
+        MltOptions opt = test::plain_mlt();
         opt.threads = c.threads;
         opt.proposals = c.proposals;
-        opt.large_step = 0.1f; // the default with burn-in (burn-in itself: default, 32 rounds)
+        opt.large_step = 0.1f; // the default with burn-in (32 rounds) and expected values
         opt.seed = c.seed + seed_offset() + 1 + r;
         opt.split = c.split;
         opt.omc_effort = 0.05; // the rule's share would make the OMC part most of the time

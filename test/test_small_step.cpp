@@ -44,7 +44,7 @@ double reference_delta(std::uint32_t r, int bits) {
 // sign bit flipped is the mirror image (v + d and v - d, modulo 2^bits).
 TEST(SmallStep, IntegerDeltaFollowsTheExponentialAndIsSymmetric) {
     DeviceScene ds = test::layout_only_scene(features(300));
-    MltOptions opt;
+    MltOptions opt = test::plain_mlt();
     opt.threads = 64;
     opt.extra_files = {kProbeFile};
     MltRenderer mlt(test::cl(), ds, opt);
@@ -113,7 +113,7 @@ CommitRun run_commit(std::uint32_t lights) {
     DeviceScene ds = test::layout_only_scene(features(lights));
     run.layout = ds.layout;
     run.dims = std::uint32_t(ds.layout.vector_dims());
-    MltOptions opt;
+    MltOptions opt = test::plain_mlt();
     opt.threads = run.chains;
     opt.extra_files = {kProbeFile};
     MltRenderer mlt(test::cl(), ds, opt);
@@ -224,7 +224,7 @@ TEST(SmallStep, LazyPathEqualsCommittedPath) {
     DeviceScene furnace = prepare_scene(many_light_furnace());
     ASSERT_EQ(furnace.layout.bits[kLightPick], 17);
     for (const DeviceScene* ds : {&water, &furnace}) {
-        MltOptions opt;
+        MltOptions opt = test::plain_mlt();
         opt.threads = 1024;
         opt.extra_files = {kProbeFile};
         MltRenderer mlt(test::cl(), *ds, opt);

@@ -102,7 +102,7 @@ TEST(Split, FurnacePartsAreTheClosedForm) {
     const int depth = 4;
     DeviceScene ds = prepare_scene(test::scene("furnace", 16, 16, depth));
     for (Split s : {Split::Visible, Split::Direct}) {
-        MltOptions opt;
+        MltOptions opt = test::plain_mlt();
         opt.threads = 4032; // 110.25 burn-in paths per pixel: 110 or 111 land
         opt.burn_in_iters = 7;
         opt.seed = 9;
@@ -153,7 +153,7 @@ class OutvotedRank : public SingleRank {
 // paths too) and matches the closed form; but on cornell-water, whose MLT
 // part holds the caustics. Ranks agree: one rank's no is every rank's.
 TEST(Split, AutoRunsChainsOnlyWhereTheyPay) {
-    MltOptions opt;
+    MltOptions opt = test::plain_mlt();
     opt.threads = 4096;
     opt.burn_in_iters = 8;
     opt.seed = 12;

@@ -96,7 +96,7 @@ TEST(StuckChains, AreCountedWhereABrightCausticHoldsThem) {
     const std::uint32_t steps = 600;
     for (const char* name : {"tiny-caustic", "cornell"}) {
         DeviceScene ds = prepare_scene(test::scene(name, 32, 32));
-        MltOptions opt;
+        MltOptions opt = test::plain_mlt();
         opt.threads = 1024;
         opt.large_step = 0.1f;
         opt.seed = 5;
@@ -140,7 +140,7 @@ TEST(StuckChains, AreCountedWhereABrightCausticHoldsThem) {
 // and none was counted (cl/mlt/chain_value.cl, chain_stayed).
 TEST(StuckChains, EveryChainThatBecameStuckIsCountedOnce) {
     DeviceScene ds = prepare_scene(test::scene("tiny-caustic", 16, 16));
-    MltOptions opt;
+    MltOptions opt = test::plain_mlt();
     opt.threads = 256;
     opt.large_step = 0.1f;
     opt.seed = 5;
@@ -168,7 +168,7 @@ TEST(StuckChains, EveryChainThatBecameStuckIsCountedOnce) {
 // a small step always moves the film position by at least one grid unit).
 TEST(ZeroContribution, ChainsOnBlackPathsAlwaysMove) {
     DeviceScene ds = prepare_scene(test::scene("ajar", 16, 16));
-    MltOptions opt;
+    MltOptions opt = test::plain_mlt();
     opt.threads = 4096;
     opt.burn_in = false;
     opt.burn_in_iters = 1;
@@ -202,7 +202,7 @@ TEST(ZeroContribution, ChainsOnBlackPathsAlwaysMove) {
 // large step 0.5, b from 2^19 OMC samples).
 TEST(ZeroContribution, MostlyBlackSceneConvergesToThePtMean) {
     DeviceScene ds = prepare_scene(test::scene("ajar", 32, 32));
-    MltOptions opt;
+    MltOptions opt = test::plain_mlt();
     opt.threads = 2048;
     opt.burn_in = false;
     opt.burn_in_iters = 256;
@@ -256,7 +256,7 @@ void subdivide_lights(Scene& scene, int n) {
 // catch light going to the wrong place, not fine bias. The chi-square tests
 // of test_mlt.cpp check the sampler itself at every K.
 MltOptions cornell_options(std::uint32_t proposals, std::uint64_t seed) {
-    MltOptions opt;
+    MltOptions opt = test::plain_mlt();
     opt.threads = 16384;
     opt.proposals = proposals;
     opt.burn_in_iters = 16;
@@ -327,7 +327,7 @@ TEST(ThreadCounts, FewestAndMostThreadsGiveTheSameImage) {
 TEST(ThreadCounts, FewerThreadsThanAWorkGroupRun) {
     DeviceScene ds = prepare_scene(test::scene("cornell", 8, 8));
     for (std::uint32_t k : {1u, 2u}) {
-        MltOptions opt;
+        MltOptions opt = test::plain_mlt();
         opt.threads = 10;
         opt.proposals = k;
         MltRun run = run_mlt(ds, opt, 50);

@@ -51,6 +51,18 @@ inline DeviceScene layout_only_scene(const SceneFeatures& f, int width = 4, int 
     return ds;
 }
 
+// MLT as the paper has it: the chains render all light (no split), splat
+// expected values (no Kelemen weights) and take large steps at 0.5. The
+// tests of the chains and of their image are written against it; the
+// library's defaults (MltOptions{}) are the command line's.
+inline MltOptions plain_mlt() {
+    MltOptions opt;
+    opt.split = Split::None;
+    opt.kelemen = false;
+    opt.large_step = 0.5f;
+    return opt;
+}
+
 // Path-traced image of `ds` at `spp` samples per pixel.
 inline Image render_pt(const DeviceScene& ds, std::uint64_t seed, std::uint32_t spp,
                        PtSampler sampler = PtSampler::Sobol) {

@@ -7,6 +7,7 @@
 #include "device/memory_plan.hpp"
 #include "device/scan.hpp"
 
+#include <algorithm>
 #include <cstdio>
 
 namespace smallmlt {
@@ -101,8 +102,7 @@ void print_film(const DeviceScene& ds, const ChainShape& shape, const DeviceInfo
 
 int run_budget(const BudgetOptions& o) {
     Scene scene = load_scene(o.scene);
-    int max_depth = o.depth.value_or(scene.depth);
-    if (max_depth < 1) max_depth = 1;
+    int max_depth = o.depth.value_or(scene.depth); // rows 1..max_depth, or 0 alone
     scene.depth = max_depth;
     if (o.width) scene.width = *o.width;
     if (o.height) scene.height = *o.height;
@@ -115,9 +115,9 @@ int run_budget(const BudgetOptions& o) {
     require_work_group(dev);
     DeviceBudget budget = device_budget(dev, o.device_mem);
     ChainShape shape;
-    shape.proposals = o.proposals;
-    shape.omc_part = o.split != Split::None;
-    shape.target_cells = o.target == Target::TwoStage ? kTargetMaxCells : 1;
+    shape.proposals = o.mlt.proposals;
+    shape.omc_part = o.mlt.split != Split::None;
+    shape.target_cells = o.mlt.target == Target::TwoStage ? kTargetMaxCells : 1;
     if (o.threads) {
         shape.threads = *o.threads;
         check_chain_shape(shape);
@@ -136,7 +136,7 @@ int run_budget(const BudgetOptions& o) {
         print_film(ds, shape, dev, budget);
     }
     std::vector<BudgetRow> rows;
-    for (int d = 1; d <= max_depth; ++d)
+    for (int d = std::min(1, max_depth); d <= max_depth; ++d)
         rows.push_back(budget_row(ds, d, shape, dev, budget));
     print_rows(rows, o.format);
     return 0;

@@ -63,10 +63,10 @@ std::uint32_t fit_to_device(const RenderOptions& o, const ClContext& cl, const D
         return 0;
     }
     ChainShape shape;
-    shape.proposals = o.proposals;
-    shape.film_atomics64 = o.film_atomics64;
-    shape.omc_part = o.split != Split::None;
-    shape.target_cells = o.target == Target::TwoStage ? kTargetMaxCells : 1;
+    shape.proposals = o.mlt.proposals;
+    shape.film_atomics64 = o.mlt.film_atomics64;
+    shape.omc_part = o.mlt.split != Split::None;
+    shape.target_cells = o.mlt.target == Target::TwoStage ? kTargetMaxCells : 1;
     if (o.threads) {
         shape.threads = *o.threads;
         check_chain_shape(shape);
@@ -100,20 +100,10 @@ std::unique_ptr<Integrator> make_integrator(const RenderOptions& o, const ClCont
         return std::make_unique<PathTracer>(cl, ds, o.seed, o.sampler, max_alloc,
                                             std::uint32_t(ranks.rank()),
                                             std::uint32_t(ranks.size()));
-    MltOptions m;
+    MltOptions m = o.mlt; // as the flags set it; the device and the rank set the rest
     m.max_alloc_bytes = max_alloc;
     m.threads = threads;
-    m.proposals = o.proposals;
-    m.large_step = *o.large_step;
     m.seed = rank_seed(o.seed, ranks.rank());
-    m.burn_in = o.burn_in;
-    m.burn_in_iters = o.burn_in_iters;
-    m.stuck_run = o.stuck_run;
-    m.film_atomics64 = o.film_atomics64;
-    m.split = o.split;
-    m.target = o.target;
-    m.kelemen = o.kelemen;
-    m.omc_effort = o.omc_effort;
     return std::make_unique<MltRenderer>(cl, ds, m);
 }
 

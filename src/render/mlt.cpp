@@ -202,7 +202,7 @@ void MltRenderer::prepare(RankGroup& ranks) {
     Clock::time_point t0 = Clock::now();
     sample_starts(ranks);
     if (opt_.kelemen)
-        kelemen_pb_ = float(std::clamp(double(opt_.large_step), 0.0, 1.0) *
+        kelemen_pb_ = float(std::clamp(double(large_step_of(opt_)), 0.0, 1.0) *
                             mlt_b(burn_in_fixed_, burn_in_samples_));
     if (split_ == Split::Auto) {
         bool pay = ranks.all(chains_pay(mlt_relative_variance()));
@@ -248,7 +248,7 @@ void MltRenderer::owed(std::uint32_t mode) const {
 
 void MltRenderer::step(std::uint32_t n) {
     cl_ulong seed = derive_seed(opt_.seed, kPurposeStep);
-    double p = std::clamp(double(opt_.large_step), 0.0, 1.0);
+    double p = std::clamp(double(large_step_of(opt_)), 0.0, 1.0);
     cl_uint threshold = p >= 1.0 ? 0xFFFFFFFFu : cl_uint(p * 4294967296.0);
     const std::uint32_t drain_every = film_.plan().steps_per_drain;
     Clock::time_point t0 = Clock::now();

@@ -18,17 +18,30 @@
 
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 namespace smallmlt {
 
 constexpr std::uint32_t kDefaultStuckRun = 1000;
+// Defaults chosen by the benches of doc/RESULTS.md: Kelemen's weights, with
+// which large steps pay more often than with expected values alone.
+constexpr bool kDefaultKelemen = true;
+constexpr float kDefaultLargeStepKelemen = 0.3f;  // with burn-in and Kelemen's weights
+constexpr float kDefaultLargeStepBurnIn = 0.1f;   // with burn-in and expected values
+constexpr float kDefaultLargeStepNoBurnIn = 0.5f; // the paper's baseline without
 
+// An MLT render's options. The defaults are the command line's: `render`
+// fills these fields from its flags (src/app/options.cpp), and
+// test/test_options.cpp checks that an empty command line leaves them as
+// they are. Only threads and max_alloc_bytes differ: the command line fits
+// them to the device.
 struct MltOptions {
     std::uint32_t threads = 1u << 16; // N work-items
     std::uint32_t proposals = 1;      // K proposals per chain: N / K chains (a power of two <= 64)
-    float large_step = 0.5f;          // probability that a step is large
+    // Probability that a step is large; unset: default_large_step (large_step_of).
+    std::optional<float> large_step;
     std::uint64_t seed = 1;
     // Burn-in by OMC (Frolov and Galaktionov, section 3.1): burn_in_iters
     // rounds of one OMC sample per thread; each chain starts at a sample
@@ -52,21 +65,33 @@ struct MltOptions {
     // What the chains render (src/render/split.hpp): with a split, the OMC
     // part is rendered by per-pixel samples beside them, omc_effort times
     // the time the rule of split.hpp gives it, and by the burn-in's paths.
-    Split split = Split::None;
+    Split split = kDefaultSplit;
     double omc_effort = 1.0;
     // The chains' target (src/render/target.hpp).
-    Target target = Target::Luminance;
+    Target target = kDefaultTarget;
     // Kelemen's weights (Kelemen et al. 2002, section 5; cl/mlt/mlt_step.cl):
     // large steps also count as independent samples, combined with the
     // chains' expected values by the balance heuristic. Off: expected values
     // alone, and the image's mean is b.
-    bool kelemen = false;
+    bool kelemen = kDefaultKelemen;
     // The file that defines eval_state: cl/path/eval_path.cl renders the scene;
     // the sampler tests use test/cl/eval_target.cl, a known target (2D, or with
     // bounces on a layout that has bounce slots).
     std::string evaluator = "cl/path/eval_path.cl";
     std::vector<std::string> extra_files; // appended to the program (test probes)
 };
+
+// The large step's probability where none is given: it depends on burn-in
+// and the weights.
+constexpr float default_large_step(bool burn_in, bool kelemen) {
+    return !burn_in  ? kDefaultLargeStepNoBurnIn
+           : kelemen ? kDefaultLargeStepKelemen
+                     : kDefaultLargeStepBurnIn;
+}
+// The large step's probability of a render of `opt`.
+inline float large_step_of(const MltOptions& opt) {
+    return opt.large_step.value_or(default_large_step(opt.burn_in, opt.kelemen));
+}
 
 // The OMC part's samples per pixel in its next call, after `spp` of them on
 // a film of `pixels`: a power of two, at most 16, at most spp / 16 and at

@@ -20,6 +20,7 @@ namespace smallmlt {
 // (cl/sampling/sample_sobol.cl) or the independent stream of each sample's key
 // (cl/sampling/sample_omc.cl, what burn-in and MLT's large steps use).
 enum class PtSampler { Sobol, Random };
+constexpr PtSampler kDefaultPtSampler = PtSampler::Sobol; // the command line's too
 
 // Kernel files of the path-tracing program, in build order.
 std::vector<std::string> pt_program_files(PtSampler sampler);
@@ -43,7 +44,7 @@ class PathTracer : public Integrator {
     // allocation). Sample k of a pixel is number offset + k * stride of its
     // sequence: rank r of R renders offset r, stride R (src/render/ranks.hpp).
     PathTracer(const ClContext& cl, const DeviceScene& ds, std::uint64_t seed,
-               PtSampler sampler = PtSampler::Sobol, std::uint64_t max_alloc_bytes = 0,
+               PtSampler sampler = kDefaultPtSampler, std::uint64_t max_alloc_bytes = 0,
                std::uint32_t sample_offset = 0, std::uint32_t sample_stride = 1);
     // Renders only the OMC part of part.split (Sobol samples).
     PathTracer(const ClContext& cl, const DeviceScene& ds, std::uint64_t seed, const OmcPart& part);
