@@ -484,7 +484,7 @@ TEST(BurnIn, ChainsStartOnThePathsTheirPicksFound) {
     MltOptions opt = test::plain_mlt();
     opt.threads = 1000;
     opt.burn_in_iters = 7;
-    opt.extra_files = {"test/cl/probe_mlt.cl"};
+    opt.test.extra_files = {"test/cl/probe_mlt.cl"};
     MltRenderer mlt(test::cl(), ds, opt);
     mlt.prepare();
     std::vector<ChainValue> v(opt.threads);

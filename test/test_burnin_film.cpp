@@ -77,7 +77,7 @@ TEST(BurnInFilm, DeviceSamplesArePixelsSobolPoints) {
         DeviceScene ds = prepare_scene(test::scene("cornell", int(w), int(h)));
         MltOptions opt = test::plain_mlt();
         opt.threads = 64;
-        opt.extra_files = {"test/cl/probe_mlt.cl"};
+        opt.test.extra_files = {"test/cl/probe_mlt.cl"};
         MltRenderer mlt(test::cl(), ds, opt);
         const std::uint32_t pixels = w * h, n = 40 * pixels;
         BurnInFilm f = burn_in_film(21, 22, pixels, 37);

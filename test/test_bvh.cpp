@@ -80,9 +80,7 @@ TEST(Bvh, DeviceClosestHitsMatchBruteForce) {
                  i % 4 == 0 ? 0.8f : std::numeric_limits<float>::infinity()}};
         d[i] = {{dir[0] * inv, dir[1] * inv, dir[2] * inv, 0}};
     }
-    ClProgram prog(test::cl().build({"cl/core/shared_types.h", "cl/geometry/geometry.cl",
-                                     "cl/geometry/bvh.cl", "test/cl/probe.cl"},
-                                    ""));
+    ClProgram prog(test::probe_program());
     ClKernel k(prog.p, "probe_closest");
     ClBuffer tris(test::cl(), CL_MEM_READ_ONLY, ds.tris.size() * sizeof(Triangle), ds.tris.data());
     ClBuffer nodes(test::cl(), CL_MEM_READ_ONLY, ds.nodes.size() * sizeof(BvhNode),

@@ -341,8 +341,8 @@ TEST(ChainTargetLazy, CommitStoresExactlyTheNumbersRead) {
     MltOptions opt = test::plain_mlt();
     opt.threads = 4096;
     opt.seed = 3;
-    opt.evaluator = "test/cl/eval_target.cl";
-    opt.extra_files = {kProbeFile};
+    opt.test.evaluator = "test/cl/eval_target.cl";
+    opt.test.extra_files = {kProbeFile};
     MltRenderer mlt(test::cl(), ds, opt);
     mlt.prepare();
     mlt.step(20); // chains of every length, with stale numbers behind them
@@ -399,8 +399,8 @@ TEST_P(ChainTarget, StatesFollowTheClosedFormMarginals) {
     opt.large_step = 0.05f;
     opt.seed = std::uint64_t(env_or("CT_SEED", 11)) + 1000 * cc.proposals;
     opt.burn_in_iters = 32;
-    opt.evaluator = "test/cl/eval_target.cl";
-    opt.extra_files = {kProbeFile};
+    opt.test.evaluator = "test/cl/eval_target.cl";
+    opt.test.extra_files = {kProbeFile};
     const std::uint32_t snapshots = cc.snapshots, burn = cc.burn, every = cc.every;
 
     auto t0 = std::chrono::steady_clock::now();
@@ -586,7 +586,7 @@ TEST_P(ChainTargetSplat, ImageMatchesThePerPixelIntegral) {
         opt.large_step = 0.05f;
         opt.seed = std::uint64_t(env_or("CT_SEED", 11)) * 7919 + 100 * sc.proposals + r;
         opt.burn_in_iters = 32;
-        opt.evaluator = "test/cl/eval_target.cl";
+        opt.test.evaluator = "test/cl/eval_target.cl";
         MltRenderer mlt(test::cl(), ds, opt);
         mlt.prepare();
         mlt.step(sc.steps);

@@ -15,8 +15,7 @@ using namespace smallmlt;
 
 TEST(SharedLayout, DeviceAgreesWithHost) {
     std::vector<std::uint32_t> host = host_layout();
-    ClProgram prog(test::cl().build(
-        program_files({Program::PathTracer, "", "", {"test/cl/probe.cl"}}, Stage::Geometry), ""));
+    ClProgram prog(test::probe_program());
     ClKernel k(prog.p, "probe_layout");
     ClBuffer out(test::cl(), CL_MEM_WRITE_ONLY, host.size() * sizeof(std::uint32_t));
     k.set_args(out);
@@ -74,8 +73,7 @@ TEST(SharedFixedPoint, HostAndDeviceRoundBsSamplesAlike) {
                               3.14159f, 1234.567f,     1e20f};
     for (std::uint32_t i = 0; i < 200; ++i)
         lum.push_back(0.5f + float(i) * 0.0123457f);
-    ClProgram prog(test::cl().build(
-        program_files({Program::PathTracer, "", "", {"test/cl/probe.cl"}}, Stage::Geometry), ""));
+    ClProgram prog(test::probe_program());
     ClKernel k(prog.p, "probe_fixed_b");
     ClBuffer in(test::cl(), CL_MEM_READ_ONLY, lum.size() * sizeof(float), lum.data());
     ClBuffer out(test::cl(), CL_MEM_WRITE_ONLY, lum.size() * sizeof(cl_ulong));

@@ -30,8 +30,8 @@ void check_roundtrip(const SceneFeatures& f, bool float32) {
     DeviceScene ds = test::layout_only_scene(f, 4, 4);
     MltOptions opt = test::plain_mlt();
     opt.threads = 16;
-    opt.float32_states = float32;
-    opt.extra_files = {kProbeFile};
+    opt.test.float32_states = float32;
+    opt.test.extra_files = {kProbeFile};
     MltRenderer mlt(test::cl(), ds, opt);
     const std::uint32_t dims = ds.layout.vector_dims(), chains = opt.threads;
     std::vector<std::uint32_t> values(std::size_t(dims) * chains);
@@ -78,7 +78,7 @@ TEST(MltLazy, LazyProposalEqualsEagerAndCommitStoresIt) {
     DeviceScene ds = prepare_scene(test::scene("cornell-water", 32, 32));
     MltOptions opt = test::plain_mlt();
     opt.threads = 1024;
-    opt.extra_files = {kProbeFile};
+    opt.test.extra_files = {kProbeFile};
     MltRenderer mlt(test::cl(), ds, opt);
     mlt.prepare();
     std::vector<cl_float4> f = test::lazy_eager_committed(mlt, ds, opt.threads);
@@ -126,8 +126,8 @@ TEST_P(MltSampler, ChainStatesFollowAKnownTarget) {
     opt.threads = (opt.proposals <= 4 ? 16384 : 4096) * opt.proposals;
     opt.large_step = 0.3f;
     opt.seed = 5;
-    opt.evaluator = "test/cl/eval_target.cl";
-    opt.extra_files = {kProbeFile};
+    opt.test.evaluator = "test/cl/eval_target.cl";
+    opt.test.extra_files = {kProbeFile};
     opt.burn_in = false; // chains start uniform: the steps alone must reach the target
     MltRenderer mlt(test::cl(), ds, opt);
     mlt.prepare();
@@ -179,7 +179,7 @@ void check_splat_image(Target target, bool kelemen = false) {
         opt.large_step = 0.3f;
         opt.seed = 100 + r;
         opt.burn_in_iters = 64; // b from 2^16 samples
-        opt.evaluator = "test/cl/eval_target.cl";
+        opt.test.evaluator = "test/cl/eval_target.cl";
         opt.target = target;
         opt.kelemen = kelemen;
         MltRenderer mlt(test::cl(), ds, opt);
@@ -254,7 +254,7 @@ TEST(MltPrecision, PackedAndFloat32StatesAgreeWithinNoise) {
             opt.threads = 2048;
             opt.seed = 300 + r + 50 * build;
             opt.burn_in_iters = 8;
-            opt.float32_states = build == 1;
+            opt.test.float32_states = build == 1;
             MltRenderer mlt(test::cl(), ds, opt);
             mlt.prepare();
             mlt.step(64);
@@ -336,7 +336,7 @@ TEST(MltStaySplat, GatheredStaysEqualEagerSplatsWithinRounding) {
             opt.large_step = 0.1f;
             opt.seed = 7;
             opt.proposals = c.proposals;
-            opt.eager_stay = eager;
+            opt.test.eager_stay = eager;
             opt.film_atomics64 = true;
             MltRenderer mlt(test::cl(), ds, opt);
             mlt.prepare();

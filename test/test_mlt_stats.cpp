@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <stdexcept>
 #include <vector>
 
 using namespace smallmlt;
@@ -30,4 +31,42 @@ TEST(MltStats, RowsJoinBySumOrMaximum) {
     // Every counter has its own word: no two of them read the same one.
     EXPECT_EQ(MLT_STAT_COUNT, MLT_COUNTS + 1);
     EXPECT_EQ(MLT_COUNTS, 7);
+}
+
+// An MLT tally goes to a Tally and back field by field, and a Tally of
+// another shape (a rank with or without a split) is refused.
+TEST(MltTally, RoundTripsAndRefusesAnotherShape) {
+    MltTally t = MltTally::shaped(4, true);
+    for (std::size_t i = 0; i < t.film.size(); ++i)
+        t.film[i] = 100 + i;
+    t.mutations = 7;
+    t.burn_in_lum = 8;
+    t.burn_in_samples = 9;
+    t.large_lum = 10;
+    t.large = 11;
+    t.burn_in_lum2 = 0.5;
+    t.omc_spp = 12;
+    for (std::size_t i = 0; i < t.omc_sums.size(); ++i) {
+        t.omc_sums[i] = 0.25 * double(i);
+        t.burn_in_omc[i] = 2.0 + double(i);
+    }
+    for (std::size_t i = 0; i < t.burn_in_landed.size(); ++i)
+        t.burn_in_landed[i] = 30 + i;
+    Tally flat = t.to_tally();
+    MltTally back = MltTally::shaped(4, true);
+    back.read(flat);
+    EXPECT_EQ(back.film, t.film);
+    EXPECT_EQ(back.mutations, 7u);
+    EXPECT_EQ(back.burn_in_lum, 8u);
+    EXPECT_EQ(back.burn_in_samples, 9u);
+    EXPECT_EQ(back.large_lum, 10u);
+    EXPECT_EQ(back.large, 11u);
+    EXPECT_EQ(back.burn_in_lum2, 0.5);
+    EXPECT_EQ(back.omc_spp, 12u);
+    EXPECT_EQ(back.omc_sums, t.omc_sums);
+    EXPECT_EQ(back.burn_in_landed, t.burn_in_landed);
+    EXPECT_EQ(back.burn_in_omc, t.burn_in_omc);
+    MltTally plain = MltTally::shaped(4, false);
+    EXPECT_THROW(plain.read(flat), std::logic_error);
+    EXPECT_THROW(back.read(plain.to_tally()), std::logic_error);
 }

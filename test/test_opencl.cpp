@@ -49,9 +49,7 @@ TEST(OpenCl, AnonymousLogLinesNameTheEmbeddedFile) {
 }
 
 TEST(OpenCl, RefusedLaunchNamesKernelAndSizes) {
-    ClProgram program(test::cl().build({"cl/core/shared_types.h", "cl/geometry/geometry.cl",
-                                        "cl/geometry/bvh.cl", "test/cl/probe.cl"},
-                                       ""));
+    ClProgram program(test::probe_program());
     ClKernel k(program.p, "probe_layout");
     // Its argument set, so that the work-group size is all that is wrong
     // (Mesa's OpenCL checks the arguments first).
@@ -119,9 +117,7 @@ TEST(OpenCl, OnlyThe64BitFilmNeedsInt64Atomics) {
 // compiler does: a loop of 2^21 iterations, more than any limit times the
 // widest unrolling, runs to its end exactly where the device has no limit.
 TEST(OpenCl, LoopIterationLimitIsWhatTheDeviceDoes) {
-    ClProgram program(test::cl().build({"cl/core/shared_types.h", "cl/geometry/geometry.cl",
-                                        "cl/geometry/bvh.cl", "test/cl/probe.cl"},
-                                       ""));
+    ClProgram program(test::probe_program());
     ClKernel k(program.p, "probe_loop_count");
     std::vector<cl_uint> ones(64, 1u);
     ClBuffer in(test::cl(), CL_MEM_READ_ONLY, ones.size() * sizeof(cl_uint), ones.data());
@@ -145,9 +141,7 @@ TEST(OpenCl, LoopIterationLimitIsWhatTheDeviceDoes) {
 // argument where work-items diverge, as every kernel here does: reads of
 // scalar, 64-bit and struct arguments there are right, item by item.
 TEST(OpenCl, ArgumentsReadWhereWorkItemsDivergeAreRight) {
-    ClProgram program(test::cl().build({"cl/core/shared_types.h", "cl/geometry/geometry.cl",
-                                        "cl/geometry/bvh.cl", "test/cl/probe.cl"},
-                                       ""));
+    ClProgram program(test::probe_program());
     ClKernel k(program.p, "probe_divergent_args");
     const std::uint32_t n = 256;
     ClBuffer out(test::cl(), CL_MEM_WRITE_ONLY, n * sizeof(cl_uint));

@@ -46,7 +46,7 @@ TEST(SmallStep, IntegerDeltaFollowsTheExponentialAndIsSymmetric) {
     DeviceScene ds = test::layout_only_scene(features(300));
     MltOptions opt = test::plain_mlt();
     opt.threads = 64;
-    opt.extra_files = {kProbeFile};
+    opt.test.extra_files = {kProbeFile};
     MltRenderer mlt(test::cl(), ds, opt);
     const std::uint32_t n = 1u << 20;
     std::vector<cl_uint> r(2 * n), v(2 * n);
@@ -115,7 +115,7 @@ CommitRun run_commit(std::uint32_t lights) {
     run.dims = std::uint32_t(ds.layout.vector_dims());
     MltOptions opt = test::plain_mlt();
     opt.threads = run.chains;
-    opt.extra_files = {kProbeFile};
+    opt.test.extra_files = {kProbeFile};
     MltRenderer mlt(test::cl(), ds, opt);
     run.before.resize(mlt.state().bytes() / 4);
     std::mt19937 rng(lights);
@@ -226,7 +226,7 @@ TEST(SmallStep, LazyPathEqualsCommittedPath) {
     for (const DeviceScene* ds : {&water, &furnace}) {
         MltOptions opt = test::plain_mlt();
         opt.threads = 1024;
-        opt.extra_files = {kProbeFile};
+        opt.test.extra_files = {kProbeFile};
         MltRenderer mlt(test::cl(), *ds, opt);
         mlt.prepare();
         ClBuffer eager(test::cl(), CL_MEM_READ_WRITE, mlt.state().bytes());

@@ -6,6 +6,7 @@
 #include "image/image.hpp"
 #include "render/mlt.hpp"
 #include "render/path_tracer.hpp"
+#include "render/programs.hpp"
 #include "scene/device_scene.hpp"
 #include "scene/scene.hpp"
 
@@ -30,6 +31,13 @@ inline const ClContext& cl() {
     if (!::smallmlt::test::cl().device().int64_atomics)                                            \
     GTEST_SKIP() << ::smallmlt::test::cl().device().name                                           \
                  << " lacks cl_khr_int64_base_atomics, which the 64-bit reference film needs"
+
+// The program of the probes of test/cl/probe.cl: the stages up to geometry,
+// then the probes (no scene's layout defines).
+inline cl_program probe_program() {
+    return cl().build(
+        program_files({Program::PathTracer, "", "", {"test/cl/probe.cl"}}, Stage::Geometry), "");
+}
 
 // A scene from scenes/ (tests run from the repository root).
 inline Scene scene(const std::string& name, int width, int height, int depth = -1) {

@@ -187,7 +187,7 @@ typedef struct {
 
 /* Counters of an MLT render: X(NAME, member, JOIN), one list for the
  * kernels (cl/mlt/mlt_step.cl) and the host (MltStats,
- * src/render/mlt.hpp). A work-group counts in local memory, 32-bit
+ * src/render/mlt_stats.hpp). A work-group counts in local memory, 32-bit
  * (MLT_COUNTS of them), and each step joins that into its own row of stats,
  * MLT_STAT_COUNT 64-bit words, with plain arithmetic (no 64-bit atomics);
  * the host joins the rows. JOIN is SUM or MAX. The row's last word,

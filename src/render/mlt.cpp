@@ -24,8 +24,8 @@ constexpr std::uint64_t kPurposeOmc = 1, kPurposePick = 2, kPurposeStep = 3, kPu
 std::string program_defines(const ClContext& cl, const DeviceScene& ds, const MltOptions& opt) {
     std::string d = ds.layout.defines() + scan_defines(cl.device()) + "#define MLT_GROUP " +
                     std::to_string(kDefaultWorkGroup) + "u\n";
-    if (opt.float32_states) d += "#define PSS_FLOAT32 1\n";
-    if (opt.eager_stay) d += "#define MLT_EAGER_STAY 1\n";
+    if (opt.test.float32_states) d += "#define PSS_FLOAT32 1\n";
+    if (opt.test.eager_stay) d += "#define MLT_EAGER_STAY 1\n";
     if (opt.split != Split::None || opt.target == Target::TwoStage)
         d += "#define MLT_BURN_IN_SAMPLES 1\n";
     if (opt.film_atomics64) d += "#define FILM_ATOMICS64 1\n";
@@ -33,7 +33,7 @@ std::string program_defines(const ClContext& cl, const DeviceScene& ds, const Ml
 }
 
 ChainShape chain_shape(const MltOptions& opt) {
-    ChainShape s{opt.threads, opt.proposals, opt.float32_states, opt.film_atomics64,
+    ChainShape s{opt.threads, opt.proposals, opt.test.float32_states, opt.film_atomics64,
                  opt.split != Split::None};
     s.target_cells = opt.target == Target::TwoStage ? kTargetMaxCells : 1;
     return s;
@@ -75,8 +75,8 @@ void mlt_require_device(const DeviceInfo& d, const MltOptions& opt) {
 std::vector<std::string> mlt_program_files(const MltOptions& opt) {
     ProgramSpec spec;
     spec.program = Program::Mlt;
-    spec.evaluator = opt.evaluator;
-    spec.extra = opt.extra_files;
+    spec.evaluator = opt.test.evaluator;
+    spec.extra = opt.test.extra_files;
     return program_files(spec);
 }
 
@@ -324,23 +324,7 @@ bool MltRenderer::finished() const {
 }
 
 std::uint32_t MltRenderer::state_bytes_per_chain() const {
-    return ds_.layout.chain_bytes(opt_.float32_states);
-}
-
-MltStats mlt_join_rows(const std::vector<std::uint64_t>& rows) {
-    MltStats s;
-    for (std::size_t r = 0; r + MLT_STAT_COUNT <= rows.size(); r += MLT_STAT_COUNT) {
-#define SMALLMLT_JOIN_SUM(a, b) ((a) + (b))
-#define SMALLMLT_JOIN_MAX(a, b) std::max((a), (b))
-#define SMALLMLT_JOIN_ROW(NAME, member, JOIN)                                                      \
-    s.member = SMALLMLT_JOIN_##JOIN(s.member, rows[r + MLT_STAT_##NAME]);
-        MLT_COUNTERS(SMALLMLT_JOIN_ROW)
-#undef SMALLMLT_JOIN_ROW
-#undef SMALLMLT_JOIN_MAX
-#undef SMALLMLT_JOIN_SUM
-        s.large_lum += rows[r + MLT_STAT_LARGE_LUM];
-    }
-    return s;
+    return ds_.layout.chain_bytes(opt_.test.float32_states);
 }
 
 MltStats MltRenderer::stats() const {
@@ -351,92 +335,44 @@ MltStats MltRenderer::stats() const {
     return out;
 }
 
+MltReport MltRenderer::report() const {
+    MltReport r;
+    r.stats = stats();
+    BEstimate be = b_estimate(r.stats);
+    r.b = be.b;
+    r.b_rel_error = be.rel_error;
+    r.prepared = prepared_;
+    r.finished = finished();
+    r.split = split_;
+    r.split_asked = opt_.split;
+    r.burn_in_lit = burn_in_fixed_ > 0;
+    r.burn_in_samples = std::uint64_t(opt_.threads) * opt_.burn_in_iters;
+    r.burn_in_spp = double(opt_.threads) * std::max(1u, opt_.burn_in_iters) / double(pixels());
+    r.chains = chains();
+    r.proposals = opt_.proposals;
+    r.steps = steps_run_;
+    r.iterations = iterations_;
+    r.state_bytes = state_bytes_per_chain();
+    r.stuck_run = opt_.stuck_run;
+    r.prepare_seconds = prepare_seconds_;
+    r.step_seconds = step_seconds_;
+    r.omc_part = omc_ != nullptr;
+    r.omc_spp = omc_spp();
+    r.omc_rate = omc_rate_;
+    r.mlt_relative_variance = omc_ ? mlt_relative_variance() : 0;
+    r.kelemen = opt_.kelemen;
+    r.kelemen_pb = kelemen_pb_;
+    r.two_stage = opt_.target == Target::TwoStage;
+    r.target_cells = target_cell_count(cells_, ds_.frame.height);
+    return r;
+}
+
 std::vector<std::string> MltRenderer::notes() const {
-    std::vector<std::string> out;
-    MltStats s = stats();
-    BEstimate be = b_estimate(s);
-    if (std::uint64_t n = s.nonfinite)
-        out.push_back(
-            std::to_string(n) +
-            " samples had a NaN or infinite radiance and were dropped (counted as black)");
-    if (prepared_ && split_ == Split::All && opt_.split == Split::Auto)
-        out.push_back("path tracing renders this scene's light well (the MLT part's relative "
-                      "variance is below " +
-                      std::to_string(int(kChainsPayRatio)) +
-                      "), so no chain ran: --split visible runs them anyway");
-    if (prepared_ && burn_in_fixed_ == 0 && !finished())
-        out.push_back("no OMC sample of the burn-in carried light in the MLT part (b = 0): the "
-                      "chains had nothing to render, and the time went to the OMC part");
-    if (finished())
-        out.push_back("no OMC sample of " +
-                      std::to_string(std::uint64_t(opt_.threads) * opt_.burn_in_iters) +
-                      " carried light (b = 0): the image is black; is the scene lit?");
-    else if (prepared_ && split_ != Split::All && be.rel_error > kMaxBRelError) {
-        char buf[240];
-        std::snprintf(buf, sizeof buf,
-                      "few OMC samples carried light: b = %.5g has a relative standard error "
-                      "of %.2f%% (above %.0f%%), and the whole image scales with it; more "
-                      "--burn-in-iters, --threads or a longer render narrow it",
-                      be.b, 100.0 * be.rel_error, 100.0 * kMaxBRelError);
-        out.push_back(buf);
-    }
-    if (s.stuck > 0) {
-        char buf[320];
-        std::snprintf(buf, sizeof buf,
-                      "%llu of %u chains (%.2f%%) stayed on one path for %u steps or more "
-                      "(longest %llu): expect bright blotches where they stayed, fading as "
-                      "the render goes on (doc/stability.md)",
-                      static_cast<unsigned long long>(s.stuck), chains(),
-                      100.0 * double(s.stuck) / chains(), opt_.stuck_run,
-                      static_cast<unsigned long long>(s.longest_run));
-        out.push_back(buf);
-    }
-    if (prepared_ && burn_in_fixed_ > 0 && iterations_ == 0)
-        out.push_back("no MLT step ran in the time given: burn-in took " +
-                      std::to_string(prepare_seconds_) +
-                      " s; give more time or fewer --burn-in-iters");
-    return out;
+    return mlt_notes(report());
 }
 
 std::string MltRenderer::summary(double) const {
-    MltStats s = stats();
-    BEstimate be = b_estimate(s);
-    double per_s = step_seconds_ > 0 ? 1e-6 / step_seconds_ : 0.0;
-    double per_mutation = s.mutations ? 100.0 / double(s.mutations) : 0.0;
-    char buf[480];
-    std::snprintf(buf, sizeof buf,
-                  "%u chains x %u proposals x %u steps (state %u B/chain), %.3f M mutations/s, "
-                  "%.3f M rays/s (steps only; b and chain start %.2f s), acceptance %.1f%%, "
-                  "large steps %.1f%%, %.2f global atomics/mutation, b = %.5g (+-%.2f%%), "
-                  "%llu non-finite dropped, "
-                  "longest run of rejections %llu, %llu chains stuck (%u in a row)",
-                  chains(), opt_.proposals, steps_run_, state_bytes_per_chain(),
-                  double(s.mutations) * per_s, double(s.rays) * per_s, prepare_seconds_,
-                  double(s.accepted) * per_mutation, double(s.large) * per_mutation,
-                  s.mutations ? double(s.atomics) / double(s.mutations) : 0.0, be.b,
-                  100.0 * be.rel_error, static_cast<unsigned long long>(s.nonfinite),
-                  static_cast<unsigned long long>(s.longest_run),
-                  static_cast<unsigned long long>(s.stuck), opt_.stuck_run);
-    std::string out = buf;
-    if (omc_) {
-        std::snprintf(buf, sizeof buf,
-                      "; split %s%s: OMC part %u spp + %.1f from burn-in (%.3g spp per step), "
-                      "MLT part's relative variance %.3g",
-                      split_name(split_), opt_.split == Split::Auto ? " (auto)" : "", omc_->spp(),
-                      double(opt_.threads) * std::max(1u, opt_.burn_in_iters) / double(pixels()),
-                      omc_rate_, mlt_relative_variance());
-        out += buf;
-    }
-    if (opt_.kelemen && steps_run_ > 0) {
-        std::snprintf(buf, sizeof buf, "; Kelemen's weights (p b0 = %.4g)", double(kelemen_pb_));
-        out += buf;
-    }
-    if (opt_.target == Target::TwoStage && steps_run_ > 0) {
-        std::snprintf(buf, sizeof buf, "; target two-stage (%u cells)",
-                      target_cell_count(cells_, ds_.frame.height));
-        out += buf;
-    }
-    return out;
+    return mlt_summary(report());
 }
 
 std::uint64_t MltRenderer::units_for_spp(std::uint32_t spp, int rank, int ranks) const {
@@ -444,33 +380,40 @@ std::uint64_t MltRenderer::units_for_spp(std::uint32_t spp, int rank, int ranks)
     return (mutations + opt_.threads - 1) / opt_.threads;
 }
 
-Tally MltRenderer::tally() const {
+MltTally MltRenderer::mlt_tally() const {
+    MltTally t;
     // The film with the stay weights the chains have gathered and not yet
     // splatted, which are then taken out again.
     owed(kOwedAdd);
-    Tally t;
-    t.ints = film_.read();
+    t.film = film_.read();
     owed(kOwedUndo);
     cl_.finish("kernel mlt_owed over " + std::to_string(chains()) + " chains");
     const int shift = FILM64_FRAC_BITS - int(film_.plan().shape.frac_bits);
-    for (std::uint64_t& w : t.ints)
+    for (std::uint64_t& w : t.film)
         w <<= shift;
     MltStats s = stats();
-    t.ints.insert(t.ints.end(),
-                  {s.mutations, burn_in_fixed_, burn_in_samples_, s.large_lum, s.large});
-    t.reals = {burn_in_sum2_};
+    t.mutations = s.mutations;
+    t.burn_in_lum = burn_in_fixed_;
+    t.burn_in_samples = burn_in_samples_;
+    t.large_lum = s.large_lum;
+    t.large = s.large;
+    t.burn_in_lum2 = burn_in_sum2_;
     if (omc_) {
-        Tally o = omc_->tally(); // sums per pixel and channel, then spp
-        t.ints.push_back(o.ints.at(0));
+        Tally o = omc_->tally(); // spp, then sums per pixel and channel
+        t.omc_spp = o.ints.at(0);
+        t.omc_sums = o.reals;
         const BurnInParts& b = burn_in_parts_;
-        t.ints.insert(t.ints.end(), b.count.begin(), b.count.end());
-        t.reals.insert(t.reals.end(), o.reals.begin(), o.reals.end());
-        t.reals.insert(t.reals.end(), b.omc.begin(), b.omc.end());
+        t.burn_in_landed = b.count;
+        t.burn_in_omc = b.omc;
         if (split_ == Split::All) // the burn-in's whole paths
             for (std::size_t i = 0; i < b.rest.size(); ++i)
-                t.reals[t.reals.size() - b.rest.size() + i] += b.rest[i];
+                t.burn_in_omc[i] += b.rest[i];
     }
     return t;
+}
+
+Tally MltRenderer::tally() const {
+    return mlt_tally().to_tally();
 }
 
 Image MltRenderer::image_from(const Tally& summed) const {
@@ -482,23 +425,21 @@ Image MltRenderer::part_image(Part part) const {
 }
 
 Image MltRenderer::image_of(const Tally& summed, bool mlt, bool omc) const {
+    MltTally t = MltTally::shaped(pixels(), omc_ != nullptr);
+    t.read(summed);
     Image img(int(ds_.frame.width), int(ds_.frame.height));
     const std::size_t n = 3 * pixels();
-    const std::uint64_t* counts = summed.ints.data() + n;
-    double mutations = double(counts[0]);
-    if (mlt && mutations > 0) {
-        double b = mlt_b(counts[1] + counts[3], counts[2] + counts[4]);
-        double scale = b * double(pixels()) / mutations / double(1u << FILM64_FRAC_BITS);
+    if (mlt && t.mutations > 0) {
+        double b = mlt_b(t.burn_in_lum + t.large_lum, t.burn_in_samples + t.large);
+        double scale = b * double(pixels()) / double(t.mutations) / double(1u << FILM64_FRAC_BITS);
         for (std::size_t i = 0; i < n; ++i)
-            img.rgb[i] = float(double(summed.ints[i]) * scale);
+            img.rgb[i] = float(double(t.film[i]) * scale);
     }
     if (omc && omc_) {
         // Per-pixel samples and the burn-in's that landed in the pixel.
-        const std::uint64_t* landed = counts + 6;
-        const double *pt = summed.reals.data() + 1, *burn = pt + n;
         for (std::size_t i = 0; i < n; ++i) {
-            double spp = double(counts[5]) + double(landed[i / 3]);
-            if (spp > 0) img.rgb[i] += float((pt[i] + burn[i]) / spp);
+            double spp = double(t.omc_spp) + double(t.burn_in_landed[i / 3]);
+            if (spp > 0) img.rgb[i] += float((t.omc_sums[i] + t.burn_in_omc[i]) / spp);
         }
     }
     return img;

@@ -11,6 +11,9 @@
 #include "render/burn_in.hpp"
 #include "render/integrator.hpp"
 #include "render/mlt_film.hpp"
+#include "render/mlt_report.hpp"
+#include "render/mlt_stats.hpp"
+#include "render/mlt_tally.hpp"
 #include "render/path_tracer.hpp"
 #include "render/split.hpp"
 #include "render/target.hpp"
@@ -32,6 +35,18 @@ constexpr float kDefaultLargeStepKelemen = 0.3f;  // with burn-in and Kelemen's 
 constexpr float kDefaultLargeStepBurnIn = 0.1f;   // with burn-in and expected values
 constexpr float kDefaultLargeStepNoBurnIn = 0.5f; // the paper's baseline without
 
+// What tests change in an MLT render besides its options: reference builds
+// to compare against, and the program's evaluator and probes.
+struct MltTestHooks {
+    bool float32_states = false; // unpacked float32 states
+    bool eager_stay = false;     // splat x's stay weight at every step
+    // The file that defines eval_state: cl/path/eval_path.cl renders the
+    // scene; the sampler tests use test/cl/eval_target.cl, a known target
+    // (2D, or with bounces on a layout that has bounce slots).
+    std::string evaluator = "cl/path/eval_path.cl";
+    std::vector<std::string> extra_files; // appended to the program (test probes)
+};
+
 // An MLT render's options. The defaults are the command line's: `render`
 // fills these fields from its flags (src/app/options.cpp), and
 // test/test_options.cpp checks that an empty command line leaves them as
@@ -50,8 +65,6 @@ struct MltOptions {
     // estimate b. Without burn-in, chains start at fresh OMC samples.
     bool burn_in = true;
     std::uint32_t burn_in_iters = 32; // chosen by measurement (doc/RESULTS.md)
-    bool float32_states = false;      // unpacked float32 states (reference build)
-    bool eager_stay = false;          // splat x's stay weight at every step (reference build)
     // The 64-bit film of 64-bit atomics (reference build; needs
     // cl_khr_int64_base_atomics); the default needs only 32-bit ones.
     bool film_atomics64 = false;
@@ -74,11 +87,9 @@ struct MltOptions {
     // chains' expected values by the balance heuristic. Off: expected values
     // alone, and the image's mean is b.
     bool kelemen = kDefaultKelemen;
-    // The file that defines eval_state: cl/path/eval_path.cl renders the scene;
-    // the sampler tests use test/cl/eval_target.cl, a known target (2D, or with
-    // bounces on a layout that has bounce slots).
-    std::string evaluator = "cl/path/eval_path.cl";
-    std::vector<std::string> extra_files; // appended to the program (test probes)
+    // Not the user's: the tests' reference builds and probes (the command
+    // line never sets these).
+    MltTestHooks test;
 };
 
 // The large step's probability where none is given: it depends on burn-in
@@ -111,24 +122,6 @@ std::vector<std::string> mlt_program_files(const MltOptions& opt);
 // b from the fixed-point sum of `samples` luminances.
 double mlt_b(std::uint64_t lum_fixed, std::uint64_t samples);
 
-// Above this relative standard error of b, a render says so (b scales the
-// whole image; its error is not reduced by running the chains longer).
-constexpr double kMaxBRelError = 0.01;
-
-// The counters of MLT_COUNTERS (cl/core/shared_types.h), joined over the
-// work-groups' rows, and the mutations the steps made.
-struct MltStats {
-    std::uint64_t mutations = 0;
-#define SMALLMLT_STAT_MEMBER(NAME, member, JOIN) std::uint64_t member = 0;
-    MLT_COUNTERS(SMALLMLT_STAT_MEMBER)
-#undef SMALLMLT_STAT_MEMBER
-    std::uint64_t large_lum = 0; // sum of the large steps' I(y), MLT_B_FRAC_BITS fixed point
-};
-
-// The counters of rows of MLT_STAT_COUNT words, each joined as
-// MLT_COUNTERS says (a sum or a maximum).
-MltStats mlt_join_rows(const std::vector<std::uint64_t>& rows);
-
 class MltRenderer : public Integrator {
   public:
     MltRenderer(const ClContext& cl, const DeviceScene& ds, const MltOptions& opt);
@@ -151,6 +144,8 @@ class MltRenderer : public Integrator {
     // chains do (and, with a split, the OMC part had none either).
     bool finished() const override;
     std::vector<std::string> notes() const override;
+    // The account its summary and notes are made from.
+    MltReport report() const;
 
     // Runs the OMC samples of burn-in: the first estimate of b, and the
     // chains' starting samples (burn-in or fresh). With the two-stage target,
@@ -179,14 +174,9 @@ class MltRenderer : public Integrator {
     MltStats stats() const;
     // Packed numbers plus the ChainValue (F(x), live bounces).
     std::uint32_t state_bytes_per_chain() const;
-    // ints: the film with what the chains owe, per pixel and channel in units
-    // of 2^-FILM64_FRAC_BITS, then mutations, the burn-in's luminance sum
-    // (MLT_B_FRAC_BITS fixed point) and sample count, the large steps' sum
-    // and count; with a split, the OMC part's samples per pixel and the
-    // burn-in's samples that landed in each pixel. reals: the burn-in's sum
-    // of squared luminances; with a split, the OMC part's per-pixel sums and
-    // the burn-in's OMC parts (with Split::All, whole paths) summed per pixel.
+    // What the render has rendered (src/render/mlt_tally.hpp), as a Tally.
     Tally tally() const override;
+    MltTally mlt_tally() const;
     // b * splats * pixels / mutations, b from the summed samples, plus the
     // OMC part of a split: per pixel, the sum of its per-pixel samples and
     // of the burn-in's that landed in it, over spp + their count. Given the

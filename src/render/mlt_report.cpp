@@ -1,0 +1,90 @@
+#include "render/mlt_report.hpp"
+
+#include <cstdio>
+
+namespace smallmlt {
+
+std::vector<std::string> mlt_notes(const MltReport& r) {
+    std::vector<std::string> out;
+    const MltStats& s = r.stats;
+    if (std::uint64_t n = s.nonfinite)
+        out.push_back(
+            std::to_string(n) +
+            " samples had a NaN or infinite radiance and were dropped (counted as black)");
+    if (r.prepared && r.split == Split::All && r.split_asked == Split::Auto)
+        out.push_back("path tracing renders this scene's light well (the MLT part's relative "
+                      "variance is below " +
+                      std::to_string(int(kChainsPayRatio)) +
+                      "), so no chain ran: --split visible runs them anyway");
+    if (r.prepared && !r.burn_in_lit && !r.finished)
+        out.push_back("no OMC sample of the burn-in carried light in the MLT part (b = 0): the "
+                      "chains had nothing to render, and the time went to the OMC part");
+    if (r.finished)
+        out.push_back("no OMC sample of " + std::to_string(r.burn_in_samples) +
+                      " carried light (b = 0): the image is black; is the scene lit?");
+    else if (r.prepared && r.split != Split::All && r.b_rel_error > kMaxBRelError) {
+        char buf[240];
+        std::snprintf(buf, sizeof buf,
+                      "few OMC samples carried light: b = %.5g has a relative standard error "
+                      "of %.2f%% (above %.0f%%), and the whole image scales with it; more "
+                      "--burn-in-iters, --threads or a longer render narrow it",
+                      r.b, 100.0 * r.b_rel_error, 100.0 * kMaxBRelError);
+        out.push_back(buf);
+    }
+    if (s.stuck > 0) {
+        char buf[320];
+        std::snprintf(buf, sizeof buf,
+                      "%llu of %u chains (%.2f%%) stayed on one path for %u steps or more "
+                      "(longest %llu): expect bright blotches where they stayed, fading as "
+                      "the render goes on (doc/stability.md)",
+                      static_cast<unsigned long long>(s.stuck), r.chains,
+                      100.0 * double(s.stuck) / r.chains, r.stuck_run,
+                      static_cast<unsigned long long>(s.longest_run));
+        out.push_back(buf);
+    }
+    if (r.prepared && r.burn_in_lit && r.iterations == 0)
+        out.push_back("no MLT step ran in the time given: burn-in took " +
+                      std::to_string(r.prepare_seconds) +
+                      " s; give more time or fewer --burn-in-iters");
+    return out;
+}
+
+std::string mlt_summary(const MltReport& r) {
+    const MltStats& s = r.stats;
+    double per_s = r.step_seconds > 0 ? 1e-6 / r.step_seconds : 0.0;
+    double per_mutation = s.mutations ? 100.0 / double(s.mutations) : 0.0;
+    char buf[480];
+    std::snprintf(buf, sizeof buf,
+                  "%u chains x %u proposals x %u steps (state %u B/chain), %.3f M mutations/s, "
+                  "%.3f M rays/s (steps only; b and chain start %.2f s), acceptance %.1f%%, "
+                  "large steps %.1f%%, %.2f global atomics/mutation, b = %.5g (+-%.2f%%), "
+                  "%llu non-finite dropped, "
+                  "longest run of rejections %llu, %llu chains stuck (%u in a row)",
+                  r.chains, r.proposals, r.steps, r.state_bytes, double(s.mutations) * per_s,
+                  double(s.rays) * per_s, r.prepare_seconds, double(s.accepted) * per_mutation,
+                  double(s.large) * per_mutation,
+                  s.mutations ? double(s.atomics) / double(s.mutations) : 0.0, r.b,
+                  100.0 * r.b_rel_error, static_cast<unsigned long long>(s.nonfinite),
+                  static_cast<unsigned long long>(s.longest_run),
+                  static_cast<unsigned long long>(s.stuck), r.stuck_run);
+    std::string out = buf;
+    if (r.omc_part) {
+        std::snprintf(buf, sizeof buf,
+                      "; split %s%s: OMC part %u spp + %.1f from burn-in (%.3g spp per step), "
+                      "MLT part's relative variance %.3g",
+                      split_name(r.split), r.split_asked == Split::Auto ? " (auto)" : "", r.omc_spp,
+                      r.burn_in_spp, r.omc_rate, r.mlt_relative_variance);
+        out += buf;
+    }
+    if (r.kelemen && r.steps > 0) {
+        std::snprintf(buf, sizeof buf, "; Kelemen's weights (p b0 = %.4g)", double(r.kelemen_pb));
+        out += buf;
+    }
+    if (r.two_stage && r.steps > 0) {
+        std::snprintf(buf, sizeof buf, "; target two-stage (%u cells)", r.target_cells);
+        out += buf;
+    }
+    return out;
+}
+
+} // namespace smallmlt

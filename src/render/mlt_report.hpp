@@ -1,0 +1,44 @@
+// The words an MLT render reports: its summary line and its notes to the
+// user, made from a plain account of the render (MltRenderer::report).
+#pragma once
+#include "render/mlt_stats.hpp"
+#include "render/split.hpp"
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace smallmlt {
+
+// Above this relative standard error of b, a render says so (b scales the
+// whole image; its error is not reduced by running the chains longer).
+constexpr double kMaxBRelError = 0.01;
+
+struct MltReport {
+    MltStats stats;
+    double b = 0, b_rel_error = 0;
+    bool prepared = false, finished = false;
+    Split split = Split::None, split_asked = Split::None; // in force; as asked (Auto)
+    bool burn_in_lit = false;          // some burn-in sample carried light (b > 0)
+    std::uint64_t burn_in_samples = 0; // threads x rounds
+    double burn_in_spp = 0;            // the burn-in's samples per pixel
+    std::uint32_t chains = 0, proposals = 1, steps = 0, iterations = 0, state_bytes = 0;
+    std::uint32_t stuck_run = 0;
+    double prepare_seconds = 0, step_seconds = 0; // b and chain start; steps
+    bool omc_part = false;                        // a split's OMC part
+    std::uint32_t omc_spp = 0;
+    double omc_rate = 0, mlt_relative_variance = 0;
+    bool kelemen = false;
+    float kelemen_pb = 0;
+    bool two_stage = false;
+    std::uint32_t target_cells = 1;
+};
+
+// The summary line: chains, throughput, acceptance, b, stuck chains, the
+// split's and the weights' figures.
+std::string mlt_summary(const MltReport& r);
+// What the user should know: dropped samples, a split that ran no chain, an
+// unlit burn-in, an uncertain b, stuck chains, no step in the time given.
+std::vector<std::string> mlt_notes(const MltReport& r);
+
+} // namespace smallmlt

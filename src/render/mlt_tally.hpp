@@ -1,0 +1,54 @@
+// What an MLT render has rendered, by name: the numbers that add up over
+// ranks (src/render/ranks.hpp), and their one order in a Tally.
+#pragma once
+#include "render/integrator.hpp"
+
+#include <cstdint>
+#include <vector>
+
+namespace smallmlt {
+
+struct MltTally {
+    // Per pixel and channel, the film with what the chains owe, in units of
+    // 2^-FILM64_FRAC_BITS.
+    std::vector<std::uint64_t> film;
+    std::uint64_t mutations = 0;
+    // b's samples, MLT_B_FRAC_BITS fixed point: the burn-in's luminance sum
+    // and count, the large steps' sum and count; the burn-in's sum of
+    // squared luminances.
+    std::uint64_t burn_in_lum = 0, burn_in_samples = 0, large_lum = 0, large = 0;
+    double burn_in_lum2 = 0;
+    // With a split: the OMC part's samples per pixel and per pixel and
+    // channel its sums; per pixel the burn-in's samples that landed in it,
+    // and per pixel and channel their OMC parts (with Split::All, whole
+    // paths).
+    std::uint64_t omc_spp = 0;
+    std::vector<double> omc_sums;
+    std::vector<std::uint64_t> burn_in_landed;
+    std::vector<double> burn_in_omc;
+
+    // An empty tally of a film of `pixels`, with or without a split's parts.
+    static MltTally shaped(std::uint64_t pixels, bool split);
+    Tally to_tally() const;
+    // Reads a tally of this one's shape; throws std::logic_error if its
+    // size is not this shape's.
+    void read(const Tally& t);
+
+    // Calls v on every field in the one order of a Tally: v(u64&) or
+    // v(double&) for a number, v(vector&) for a list.
+    template <typename T, typename V> static void visit(T& t, V&& v) {
+        v(t.film);
+        v(t.mutations);
+        v(t.burn_in_lum);
+        v(t.burn_in_samples);
+        v(t.large_lum);
+        v(t.large);
+        v(t.burn_in_lum2);
+        v(t.omc_spp);
+        v(t.omc_sums);
+        v(t.burn_in_landed);
+        v(t.burn_in_omc);
+    }
+};
+
+} // namespace smallmlt
