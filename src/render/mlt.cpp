@@ -221,14 +221,16 @@ double MltRenderer::mlt_relative_variance() const {
     return mlt_part_relative_variance(mlt_variance_, mlt_part_b_, double(pixels()));
 }
 
-std::unique_ptr<PathTracer> MltRenderer::make_omc_part(Split split) const {
+std::unique_ptr<OmcSchedule> MltRenderer::make_omc_part(Split split) const {
     // Each pixel's Sobol sequence goes on after the burn-in's samples (and
     // the fresh starts of --burn-in none, round T).
     const std::uint32_t rounds = std::max(1u, opt_.burn_in_iters);
     std::uint64_t samples = std::uint64_t(opt_.threads) * rounds + (opt_.burn_in ? 0 : chains());
     std::uint32_t first = burn_in_film_end(burn_in_film_, std::uint32_t(pixels()), samples);
-    return std::make_unique<PathTracer>(cl_, ds_, derive_seed(opt_.seed, kPurposePixel),
-                                        OmcPart{split, &scene_, first});
+    return std::make_unique<OmcSchedule>(
+        std::make_unique<PathTracer>(cl_, ds_, derive_seed(opt_.seed, kPurposePixel),
+                                     OmcPart{split, &scene_, first}),
+        opt_.threads, opt_.omc_effort);
 }
 
 void MltRenderer::init_chains() {
@@ -269,52 +271,20 @@ void MltRenderer::step(std::uint32_t n) {
                 film_.drain();
             }
         }
-        if (omc_) omc_after_step(chains);
+        if (omc_) omc_->after_step(chains, [this] { return split_costs(); });
     }
     cl_.finish("kernel mlt_step over " + std::to_string(opt_.threads) + " threads");
     step_seconds_ += seconds_since(t0);
 }
 
-void MltRenderer::choose_omc_rate() {
+SplitCosts MltRenderer::split_costs() const {
     SplitCosts c;
     c.omc_variance = omc_variance_;
     c.b = mlt_part_b_;
     c.pixels = double(pixels());
     c.threads = double(opt_.threads);
-    // One OMC-part sample per pixel measures its rays (and is kept).
-    omc_->add_samples(1);
-    c.omc_rays = double(omc_->rays()) / c.pixels;
     c.mutation_rays = double(stats().rays) / c.threads;
-    omc_rate_ = omc_samples_per_step(c, opt_.omc_effort);
-}
-
-void MltRenderer::omc_after_step(bool chains) {
-    if (!chains) {
-        // No chains (Split::All, or no light in the MLT part): a step's time,
-        // one path per thread, goes to per-pixel samples.
-        omc_owed_ += double(opt_.threads) / double(pixels());
-    } else if (omc_rate_ == 0 && omc_->spp() == 0) {
-        choose_omc_rate();
-        omc_owed_ = std::max(0.0, omc_rate_ - 1);
-    } else {
-        omc_owed_ += omc_rate_;
-    }
-    // Whole chunks as soon as they are owed: the chunks depend only on the
-    // samples so far, so the host's sums, and the image, do not depend on how
-    // steps are grouped into passes.
-    const std::uint64_t p = pixels();
-    for (std::uint32_t k = omc_chunk(omc_->spp(), p); omc_owed_ >= k;
-         k = omc_chunk(omc_->spp(), p)) {
-        omc_->add_samples(k);
-        omc_owed_ -= k;
-    }
-}
-
-std::uint32_t omc_chunk(std::uint32_t spp, std::uint64_t pixels) {
-    std::uint32_t k = 1;
-    while (k < 16 && 32 * k <= spp && 2 * k * pixels <= (1u << 18))
-        k *= 2;
-    return k;
+    return c;
 }
 
 bool MltRenderer::finished() const {
@@ -358,7 +328,7 @@ MltReport MltRenderer::report() const {
     r.step_seconds = step_seconds_;
     r.omc_part = omc_ != nullptr;
     r.omc_spp = omc_spp();
-    r.omc_rate = omc_rate_;
+    r.omc_rate = omc_rate();
     r.mlt_relative_variance = omc_ ? mlt_relative_variance() : 0;
     r.kelemen = opt_.kelemen;
     r.kelemen_pb = kelemen_pb_;
@@ -399,7 +369,7 @@ MltTally MltRenderer::mlt_tally() const {
     t.large = s.large;
     t.burn_in_lum2 = burn_in_sum2_;
     if (omc_) {
-        Tally o = omc_->tally(); // spp, then sums per pixel and channel
+        Tally o = omc_->part().tally(); // spp, then sums per pixel and channel
         t.omc_spp = o.ints.at(0);
         t.omc_sums = o.reals;
         const BurnInParts& b = burn_in_parts_;

@@ -14,6 +14,7 @@
 #include "render/mlt_report.hpp"
 #include "render/mlt_stats.hpp"
 #include "render/mlt_tally.hpp"
+#include "render/omc_schedule.hpp"
 #include "render/path_tracer.hpp"
 #include "render/split.hpp"
 #include "render/target.hpp"
@@ -104,14 +105,6 @@ inline float large_step_of(const MltOptions& opt) {
     return opt.large_step.value_or(default_large_step(opt.burn_in, opt.kelemen));
 }
 
-// The OMC part's samples per pixel in its next call, after `spp` of them on
-// a film of `pixels`: a power of two, at most 16, at most spp / 16 and at
-// most 2^18 paths (1 if even one sample per pixel is more), so that a call's
-// fixed cost (a launch, and reading its band back) is spread over several
-// samples, a call stays short, and what a render leaves owed at its end
-// stays below a 16th of the samples.
-std::uint32_t omc_chunk(std::uint32_t spp, std::uint64_t pixels);
-
 // Throws InputError naming the device if it lacks what the options need:
 // 64-bit atomics for the 64-bit reference film.
 void mlt_require_device(const DeviceInfo& d, const MltOptions& opt);
@@ -190,8 +183,8 @@ class MltRenderer : public Integrator {
     Image part_image(Part part) const;
     // The OMC part's per-pixel samples per MLT step (split.hpp's rule), once
     // the first step has measured a mutation's rays; 0 before.
-    double omc_rate() const { return omc_rate_; }
-    std::uint32_t omc_spp() const { return omc_ ? omc_->spp() : 0; }
+    double omc_rate() const { return omc_ ? omc_->rate() : 0; }
+    std::uint32_t omc_spp() const { return omc_ ? omc_->part().spp() : 0; }
     // The split in force: opt.split, with Auto decided by prepare().
     Split split() const { return split_; }
     // r of chains_pay (src/render/split.hpp), from the burn-in.
@@ -201,7 +194,7 @@ class MltRenderer : public Integrator {
     // and the OMC part's first Sobol sample number (after the burn-in's).
     const BurnInFilm& burn_in_film() const { return burn_in_film_; }
     const BurnInParts& burn_in_parts() const { return burn_in_parts_; }
-    std::uint32_t omc_first_sample() const { return omc_ ? omc_->first_sample() : 0; }
+    std::uint32_t omc_first_sample() const { return omc_ ? omc_->part().first_sample() : 0; }
 
     // For tests: the raw buffers.
     const ClBuffer& state() const { return state_; }
@@ -225,7 +218,7 @@ class MltRenderer : public Integrator {
     BurnInFilm burn_in_film_; // where the burn-in's samples lie on the film
     MltFilm film_;
     Split split_;
-    std::unique_ptr<PathTracer> omc_; // the OMC part's per-pixel samples (a split)
+    std::unique_ptr<OmcSchedule> omc_; // the OMC part's per-pixel samples (a split)
     // The burn-in's OMC and MLT parts, summed per pixel and channel.
     BurnInParts burn_in_parts_;                  // with a split or the two-stage target
     double omc_variance_ = 0, mlt_variance_ = 0; // V_o and V_m of split.hpp, from the burn-in
@@ -234,13 +227,10 @@ class MltRenderer : public Integrator {
     // Fixes the two-stage target's weights from the burn-in's MLT parts so far.
     void fix_target(RankGroup& ranks);
     // The OMC part's path tracer for `split`.
-    std::unique_ptr<PathTracer> make_omc_part(Split split) const;
-    double omc_rate_ = 0, omc_owed_ = 0;
+    std::unique_ptr<OmcSchedule> make_omc_part(Split split) const;
     float kelemen_pb_ = 0; // p b0 of Kelemen's weights, b0 from the burn-in; 0 without
-    // Runs the OMC part's samples owed after a step (of the chains, or
-    // without them).
-    void omc_after_step(bool chains);
-    void choose_omc_rate();
+    // What the split's rule weighs, from the burn-in and the first step.
+    SplitCosts split_costs() const;
     Image image_of(const Tally& summed, bool mlt, bool omc) const;
     // Runs mlt_owed in `mode` (MLT_OWED_* of cl/kernels/mlt.cl).
     void owed(std::uint32_t mode) const;
