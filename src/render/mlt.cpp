@@ -228,8 +228,8 @@ std::unique_ptr<OmcSchedule> MltRenderer::make_omc_part(Split split) const {
     std::uint64_t samples = std::uint64_t(opt_.threads) * rounds + (opt_.burn_in ? 0 : chains());
     std::uint32_t first = burn_in_film_end(burn_in_film_, std::uint32_t(pixels()), samples);
     return std::make_unique<OmcSchedule>(
-        std::make_unique<PathTracer>(cl_, ds_, derive_seed(opt_.seed, kPurposePixel),
-                                     OmcPart{split, &scene_, first}),
+        std::make_unique<OmcPartTracer>(cl_, ds_, derive_seed(opt_.seed, kPurposePixel),
+                                        OmcPart{split, &scene_, first}),
         opt_.threads, opt_.omc_effort);
 }
 

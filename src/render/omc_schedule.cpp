@@ -11,7 +11,7 @@ std::uint32_t omc_chunk(std::uint32_t spp, std::uint64_t pixels) {
     return k;
 }
 
-OmcSchedule::OmcSchedule(std::unique_ptr<PathTracer> part, std::uint32_t threads, double effort)
+OmcSchedule::OmcSchedule(std::unique_ptr<OmcPartTracer> part, std::uint32_t threads, double effort)
     : part_(std::move(part)), threads_(threads), effort_(effort) {}
 
 void OmcSchedule::after_step(bool chains, const std::function<SplitCosts()>& costs) {

@@ -1,9 +1,9 @@
 // The split's OMC part beside the chains (src/render/split.hpp): its
-// per-pixel samples, a PathTracer in its OMC-part role, run after each MLT
+// per-pixel samples, an OmcPartTracer, run after each MLT
 // step at the rate that the split's rule gives, once the first step has
 // measured a mutation's rays.
 #pragma once
-#include "render/path_tracer.hpp"
+#include "render/omc_part_tracer.hpp"
 #include "render/split.hpp"
 
 #include <cstdint>
@@ -23,7 +23,7 @@ std::uint32_t omc_chunk(std::uint32_t spp, std::uint64_t pixels);
 class OmcSchedule {
   public:
     // `threads`: the chains' work-items; `effort`: --omc-effort.
-    OmcSchedule(std::unique_ptr<PathTracer> part, std::uint32_t threads, double effort);
+    OmcSchedule(std::unique_ptr<OmcPartTracer> part, std::uint32_t threads, double effort);
 
     // After one MLT step. With chains, the part is owed the rule's rate of
     // samples per pixel (chosen at the first step from `costs`, with the
@@ -35,10 +35,10 @@ class OmcSchedule {
 
     // Samples per pixel per MLT step (0 before the first step with chains).
     double rate() const { return rate_; }
-    const PathTracer& part() const { return *part_; }
+    const OmcPartTracer& part() const { return *part_; }
 
   private:
-    std::unique_ptr<PathTracer> part_;
+    std::unique_ptr<OmcPartTracer> part_;
     std::uint32_t threads_;
     double effort_, rate_ = 0, owed_ = 0;
 };

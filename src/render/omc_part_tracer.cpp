@@ -1,0 +1,39 @@
+#include "render/omc_part_tracer.hpp"
+
+#include "device/memory_plan.hpp"
+
+namespace smallmlt {
+
+OmcPartTracer::OmcPartTracer(const ClContext& cl, const DeviceScene& ds, std::uint64_t seed,
+                             const OmcPart& part)
+    : cl_(cl),
+      passes_(cl, ds, *part.scene, PtSampler::Sobol,
+              split_defines(part.split) + "#define PT_OMC_PART 1\n", {seed, part.first_sample, 1},
+              omc_scratch_pixels(std::uint64_t(ds.frame.width) * ds.frame.height),
+              plan_pt(ds, cl.device().max_alloc_bytes).bytes(Buffer::Stats)),
+      scratch_(cl, CL_MEM_READ_WRITE, passes_.band_pixels() * kPtFilmPixelBytes),
+      sums_(3 * passes_.pixels(), 0.0) {}
+
+void OmcPartTracer::add_samples(std::uint32_t n) {
+    std::vector<float> band(3 * passes_.band_pixels());
+    passes_.add_samples(
+        n,
+        [&](std::uint64_t) -> const ClBuffer& {
+            scratch_.fill_zero(cl_);
+            return scratch_;
+        },
+        [&](std::uint64_t first, std::uint64_t size) {
+            scratch_.read(cl_, band.data());
+            for (std::size_t i = 0; i < 3 * size; ++i)
+                sums_[3 * first + i] += band[i];
+        });
+}
+
+Tally OmcPartTracer::tally() const {
+    Tally t;
+    t.ints = {passes_.spp()};
+    t.reals = sums_;
+    return t;
+}
+
+} // namespace smallmlt

@@ -1,0 +1,72 @@
+// The pass code of ordinary Monte Carlo on the device, shared by its two
+// roles: the standalone path tracer (src/render/path_tracer.hpp) and the
+// split's OMC part (src/render/omc_part_tracer.hpp). It owns the pt_render
+// kernel (cl/kernels/pt.cl), its per-work-group counters and the numbering
+// of samples; the roles own the film.
+#pragma once
+#include "device/ocl.hpp"
+#include "device/scene_buffers.hpp"
+#include "scene/device_scene.hpp"
+
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace smallmlt {
+
+// Where the path tracer's numbers come from: Owen-scrambled Sobol points
+// (cl/sampling/sample_sobol.cl) or the independent stream of each sample's key
+// (cl/sampling/sample_omc.cl, what burn-in and MLT's large steps use).
+enum class PtSampler { Sobol, Random };
+constexpr PtSampler kDefaultPtSampler = PtSampler::Sobol; // the command line's too
+
+// Kernel files of the path-tracing program, in build order.
+std::vector<std::string> pt_program_files(PtSampler sampler);
+
+// Sample k of a pixel is number offset + k * stride of its sequence: rank r
+// of R renders offset r, stride R (src/render/ranks.hpp); the OMC part starts
+// after the burn-in's samples.
+struct PtNumbering {
+    std::uint64_t seed = 0;
+    std::uint32_t offset = 0, stride = 1;
+};
+
+class PtPasses {
+  public:
+    // `defines` after the scene layout's; the film in bands of band_pixels;
+    // stats_bytes from the memory plan.
+    PtPasses(const ClContext& cl, const DeviceScene& ds, const SceneBuffers& scene,
+             PtSampler sampler, const std::string& defines, PtNumbering numbering,
+             std::uint64_t band_pixels, std::uint64_t stats_bytes);
+
+    // Adds n samples per pixel (numbered spp() .. spp() + n - 1), band by
+    // band: band b's pixels go to band(b); after(first, size) runs once its
+    // launch is queued (the OMC part reads its scratch band there).
+    void add_samples(std::uint32_t n, const std::function<const ClBuffer&(std::uint64_t)>& band,
+                     const std::function<void(std::uint64_t, std::uint64_t)>& after);
+
+    std::uint32_t spp() const { return spp_; }
+    std::uint32_t first_sample() const { return numbering_.offset; }
+    std::uint64_t pixels() const { return std::uint64_t(ds_.frame.width) * ds_.frame.height; }
+    std::uint64_t band_pixels() const { return band_pixels_; }
+    std::uint64_t rays() const;
+    // Samples dropped because their radiance was NaN or infinite.
+    std::uint64_t nonfinite() const;
+
+  private:
+    const ClContext& cl_;
+    const DeviceScene& ds_;
+    const SceneBuffers& scene_;
+    ClProgram program_;
+    ClKernel kernel_;
+    ClBuffer stats_; // PT_STAT_COUNT per work-group
+    PtNumbering numbering_;
+    std::uint64_t band_pixels_;
+    std::uint32_t spp_ = 0;
+    void launch(std::uint32_t n, const std::function<const ClBuffer&(std::uint64_t)>& band,
+                const std::function<void(std::uint64_t, std::uint64_t)>& after);
+    std::uint64_t stat(int which) const; // sum of the rows of stats
+};
+
+} // namespace smallmlt
