@@ -31,7 +31,7 @@ if [ -n "${QUICK:-}" ]; then
     step split-transition strip
     SIZE=32 TIMES="0.5 1" KS="1 2 4" sh bench/proposals.sh "$BIN"
     step stuck chains
-    SIZE=32 SECONDS=1 SEEDS=1 LARGE_STEPS="0.1 0.5" LOG_EVERY=0.25 sh bench/stuck.sh "$BIN"
+    SIZE=32 SECONDS=1 SPP=64 SEEDS=1 LARGE_STEPS="0.1 0.5" LOG_EVERY=0.25 sh bench/stuck.sh "$BIN"
     step 32-bit against 64-bit film
     SIZES=16 SCENES=cornell SPP=4 RUNS=1 sh bench/film_atomics.sh "$BIN"
     step ranks against one process

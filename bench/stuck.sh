@@ -8,7 +8,9 @@
 # whatever the burn-in found (--split visible: --split auto path traces the
 # scene when the burn-in misses the caustic's paths).
 # Writes bench/results/stuck/. Usage: bench/stuck.sh [BIN]
-# Settings (environment): SIZE, SECONDS, THREADS, LARGE_STEPS, SEEDS, LOG_EVERY.
+# Settings (environment): SIZE, SECONDS, THREADS, LARGE_STEPS, SEEDS, LOG_EVERY;
+# SPP renders MLT for that many mutations per pixel instead of SECONDS (the
+# quick mode: its chains then run steps however slow the machine).
 set -eu
 BIN=${1:-build/smallmlt}
 SCENE=tiny-caustic
@@ -24,13 +26,15 @@ ref=$(sh bench/reference.sh "$BIN" "$SCENE" "$SIZE")
 csv="$OUT/error.csv"
 echo "method,seed,seconds,samples_per_pixel,samples,mse,rel_mse,mse_unlit,block8_mse" > "$csv"
 echo "large_step,seed,chains,steps,stuck_chains,longest_run" > "$OUT/stuck.csv"
-common="scenes/$SCENE.scene --width $SIZE --height $SIZE --time $SECONDS_ --reference $ref --reference-mask ${ref%.pfm}-mask.pfm"
+common="scenes/$SCENE.scene --width $SIZE --height $SIZE --reference $ref --reference-mask ${ref%.pfm}-mask.pfm"
+mlt_work="--time $SECONDS_"
+[ -n "${SPP:-}" ] && mlt_work="--spp $SPP"
 for seed in $SEEDS; do
-    "$BIN" render $common --method pt --seed "$seed" --quiet --log "$OUT/log.csv" \
+    "$BIN" render $common --time "$SECONDS_" --method pt --seed "$seed" --quiet --log "$OUT/log.csv" \
         --log-every "$LOG_EVERY" --out "$OUT/pt-s$seed.png"
     tail -n +2 "$OUT/log.csv" | sed "s/^/pt,$seed,/" >> "$csv"
     for p in $LARGE_STEPS; do
-        "$BIN" render $common --threads "$THREADS" --split visible --large-step "$p" --seed "$seed" \
+        "$BIN" render $common $mlt_work --threads "$THREADS" --split visible --large-step "$p" --seed "$seed" \
             --log "$OUT/log.csv" --log-every "$LOG_EVERY" --out "$OUT/mlt-p$p-s$seed.png" \
             2> /dev/null > "$OUT/summary.txt"
         tail -n +2 "$OUT/log.csv" | sed "s/^/mlt-p$p,$seed,/" >> "$csv"

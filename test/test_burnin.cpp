@@ -482,22 +482,23 @@ TEST(OmcKeys, DistinctOverTheWholeCommandLineRange) {
 TEST(BurnIn, ChainsStartOnThePathsTheirPicksFound) {
     DeviceScene ds = prepare_scene(test::scene("cornell-water", 32, 32));
     MltOptions opt = test::plain_mlt();
+    MltTestHooks hooks;
     opt.threads = 1000;
     opt.burn_in_iters = 7;
-    opt.test.extra_files = {"test/cl/probe_mlt.cl"};
-    MltRenderer mlt(test::cl(), ds, opt);
+    hooks.extra_files = {"test/cl/probe_mlt.cl"};
+    MltRenderer mlt(test::cl(), ds, opt, hooks);
     mlt.prepare();
     std::vector<ChainValue> v(opt.threads);
-    mlt.values().read(test::cl(), v.data());
+    MltInspect::values(mlt).read(test::cl(), v.data());
     int dark = 0;
     for (const ChainValue& c : v)
         dark += !(c.rgb[0] + c.rgb[1] + c.rgb[2] > 0);
     EXPECT_EQ(dark, 0) << "chains started on unlit paths";
     std::vector<cl_uint2> picks(opt.threads);
-    mlt.picks().read(test::cl(), picks.data());
+    MltInspect::picks(mlt).read(test::cl(), picks.data());
     ClBuffer out(test::cl(), CL_MEM_WRITE_ONLY, opt.threads * sizeof(cl_uint));
-    ClKernel k(mlt.program(), "probe_chain_pixel");
-    k.set_args(ds.frame, mlt.state(), cl_uint(opt.threads), out);
+    ClKernel k(MltInspect::program(mlt), "probe_chain_pixel");
+    k.set_args(ds.frame, MltInspect::state(mlt), cl_uint(opt.threads), out);
     k.run(test::cl(), opt.threads);
     std::vector<cl_uint> pixel(opt.threads);
     out.read(test::cl(), pixel.data());

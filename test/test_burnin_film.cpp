@@ -76,13 +76,14 @@ TEST(BurnInFilm, DeviceSamplesArePixelsSobolPoints) {
     for (auto [w, h] : {std::pair{13u, 7u}, std::pair{8u, 4u}}) {
         DeviceScene ds = prepare_scene(test::scene("cornell", int(w), int(h)));
         MltOptions opt = test::plain_mlt();
+        MltTestHooks hooks;
         opt.threads = 64;
-        opt.test.extra_files = {"test/cl/probe_mlt.cl"};
-        MltRenderer mlt(test::cl(), ds, opt);
+        hooks.extra_files = {"test/cl/probe_mlt.cl"};
+        MltRenderer mlt(test::cl(), ds, opt, hooks);
         const std::uint32_t pixels = w * h, n = 40 * pixels;
         BurnInFilm f = burn_in_film(21, 22, pixels, 37);
         ClBuffer out(test::cl(), CL_MEM_WRITE_ONLY, std::size_t(n) * 3 * sizeof(cl_uint));
-        ClKernel k(mlt.program(), "probe_burnin_film");
+        ClKernel k(MltInspect::program(mlt), "probe_burnin_film");
         k.set_args(f, ds.frame, cl_ulong(0), cl_uint(n), out);
         k.run(test::cl(), n);
         std::vector<cl_uint> v(std::size_t(n) * 3);

@@ -339,11 +339,12 @@ TEST(ChainTargetMath, ClosedFormsEqualGridSums) {
 TEST(ChainTargetLazy, CommitStoresExactlyTheNumbersRead) {
     const DeviceScene ds = test::layout_only_scene(target_features(), 8, 8);
     MltOptions opt = test::plain_mlt();
+    MltTestHooks hooks;
     opt.threads = 4096;
     opt.seed = 3;
-    opt.test.evaluator = "test/cl/eval_target.cl";
-    opt.test.extra_files = {kProbeFile};
-    MltRenderer mlt(test::cl(), ds, opt);
+    hooks.evaluator = "test/cl/eval_target.cl";
+    hooks.extra_files = {kProbeFile};
+    MltRenderer mlt(test::cl(), ds, opt, hooks);
     mlt.prepare();
     mlt.step(20); // chains of every length, with stale numbers behind them
     std::vector<cl_float4> f = test::lazy_eager_committed(mlt, ds, opt.threads);
@@ -394,17 +395,18 @@ TEST_P(ChainTarget, StatesFollowTheClosedFormMarginals) {
     const SampleLayout& l = ds.layout;
     const KnownTarget tg(l);
     MltOptions opt = test::plain_mlt();
+    MltTestHooks hooks;
     opt.proposals = cc.proposals;
     opt.threads = cc.chains * cc.proposals;
     opt.large_step = 0.05f;
     opt.seed = std::uint64_t(env_or("CT_SEED", 11)) + 1000 * cc.proposals;
     opt.burn_in_iters = 32;
-    opt.test.evaluator = "test/cl/eval_target.cl";
-    opt.test.extra_files = {kProbeFile};
+    hooks.evaluator = "test/cl/eval_target.cl";
+    hooks.extra_files = {kProbeFile};
     const std::uint32_t snapshots = cc.snapshots, burn = cc.burn, every = cc.every;
 
     auto t0 = std::chrono::steady_clock::now();
-    MltRenderer mlt(test::cl(), ds, opt);
+    MltRenderer mlt(test::cl(), ds, opt, hooks);
     mlt.prepare();
     const std::uint32_t chains = mlt.chains();
 
@@ -416,7 +418,7 @@ TEST_P(ChainTarget, StatesFollowTheClosedFormMarginals) {
     const cl_uint n = cl_uint(dims.size());
     ClBuffer dims_buf(test::cl(), CL_MEM_READ_ONLY, dims.size() * 4, dims.data());
     ClBuffer out(test::cl(), CL_MEM_WRITE_ONLY, std::size_t(chains) * (n + 1) * 4);
-    ClKernel probe(mlt.program(), "probe_chain_numbers");
+    ClKernel probe(MltInspect::program(mlt), "probe_chain_numbers");
     std::vector<cl_uint> row(std::size_t(chains) * (n + 1));
 
     // The statistics and their cells (doc/testing.md gives the formulas).
@@ -472,7 +474,8 @@ TEST_P(ChainTarget, StatesFollowTheClosedFormMarginals) {
     double lag[4][5] = {}; // sums: a, b, a^2, b^2, ab
     for (std::uint32_t snap = 0; snap < snapshots; ++snap) {
         if (snap) mlt.step(every);
-        probe.set_args(mlt.state(), mlt.values(), cl_uint(chains), dims_buf, n, out);
+        probe.set_args(MltInspect::state(mlt), MltInspect::values(mlt), cl_uint(chains), dims_buf,
+                       n, out);
         probe.run(test::cl(), chains);
         out.read(test::cl(), row.data());
         if (diag && snap) {
@@ -581,13 +584,14 @@ TEST_P(ChainTargetSplat, ImageMatchesThePerPixelIntegral) {
     double acceptance = 0, b_error = 0;
     for (std::uint32_t r = 0; r < replicas; ++r) {
         MltOptions opt = test::plain_mlt();
+        MltTestHooks hooks;
         opt.proposals = sc.proposals;
         opt.threads = sc.threads;
         opt.large_step = 0.05f;
         opt.seed = std::uint64_t(env_or("CT_SEED", 11)) * 7919 + 100 * sc.proposals + r;
         opt.burn_in_iters = 32;
-        opt.test.evaluator = "test/cl/eval_target.cl";
-        MltRenderer mlt(test::cl(), ds, opt);
+        hooks.evaluator = "test/cl/eval_target.cl";
+        MltRenderer mlt(test::cl(), ds, opt, hooks);
         mlt.prepare();
         mlt.step(sc.steps);
         MltStats ms = mlt.stats();

@@ -91,7 +91,7 @@ TEST(FilmOverflow, EverySplatOnOnePixelIsExact) {
     mlt.prepare();
     mlt.step(32); // two passes: each ends with every gathered weight splatted
     std::vector<ChainValue> values(4096);
-    mlt.values().read(test::cl(), values.data());
+    MltInspect::values(mlt).read(test::cl(), values.data());
     for (const ChainValue& v : values)
         ASSERT_EQ(v.stay, 0u) << "a pass ended with a weight still owed";
     mlt.step(10);

@@ -29,10 +29,11 @@ std::uint32_t bits_of(const SampleLayout& l, std::uint32_t d) {
 void check_roundtrip(const SceneFeatures& f, bool float32) {
     DeviceScene ds = test::layout_only_scene(f, 4, 4);
     MltOptions opt = test::plain_mlt();
+    MltTestHooks hooks;
     opt.threads = 16;
-    opt.test.float32_states = float32;
-    opt.test.extra_files = {kProbeFile};
-    MltRenderer mlt(test::cl(), ds, opt);
+    hooks.float32_states = float32;
+    hooks.extra_files = {kProbeFile};
+    MltRenderer mlt(test::cl(), ds, opt, hooks);
     const std::uint32_t dims = ds.layout.vector_dims(), chains = opt.threads;
     std::vector<std::uint32_t> values(std::size_t(dims) * chains);
     std::mt19937 rng(3);
@@ -43,8 +44,8 @@ void check_roundtrip(const SceneFeatures& f, bool float32) {
         }
     ClBuffer in(test::cl(), CL_MEM_READ_ONLY, values.size() * 4, values.data());
     ClBuffer out(test::cl(), CL_MEM_WRITE_ONLY, values.size() * 4);
-    ClKernel k(mlt.program(), "probe_pss_roundtrip");
-    k.set_args(mlt.state(), in, out, cl_uint(chains), cl_uint(f.depth));
+    ClKernel k(MltInspect::program(mlt), "probe_pss_roundtrip");
+    k.set_args(MltInspect::state(mlt), in, out, cl_uint(chains), cl_uint(f.depth));
     k.run(test::cl(), chains);
     std::vector<std::uint32_t> back(values.size());
     out.read(test::cl(), back.data());
@@ -77,9 +78,10 @@ TEST(MltPacking, StateSizeFollowsTheLayout) {
 TEST(MltLazy, LazyProposalEqualsEagerAndCommitStoresIt) {
     DeviceScene ds = prepare_scene(test::scene("cornell-water", 32, 32));
     MltOptions opt = test::plain_mlt();
+    MltTestHooks hooks;
     opt.threads = 1024;
-    opt.test.extra_files = {kProbeFile};
-    MltRenderer mlt(test::cl(), ds, opt);
+    hooks.extra_files = {kProbeFile};
+    MltRenderer mlt(test::cl(), ds, opt, hooks);
     mlt.prepare();
     std::vector<cl_float4> f = test::lazy_eager_committed(mlt, ds, opt.threads);
     int lit = 0;
@@ -122,20 +124,21 @@ TEST_P(MltSampler, ChainStatesFollowAKnownTarget) {
     const int bins = 16;
     DeviceScene ds = test::layout_only_scene({}, bins, bins);
     MltOptions opt = test::plain_mlt();
+    MltTestHooks hooks;
     opt.proposals = GetParam();
     opt.threads = (opt.proposals <= 4 ? 16384 : 4096) * opt.proposals;
     opt.large_step = 0.3f;
     opt.seed = 5;
-    opt.test.evaluator = "test/cl/eval_target.cl";
-    opt.test.extra_files = {kProbeFile};
+    hooks.evaluator = "test/cl/eval_target.cl";
+    hooks.extra_files = {kProbeFile};
     opt.burn_in = false; // chains start uniform: the steps alone must reach the target
-    MltRenderer mlt(test::cl(), ds, opt);
+    MltRenderer mlt(test::cl(), ds, opt, hooks);
     mlt.prepare();
     mlt.step(300);
     const std::uint32_t chains = mlt.chains();
     ClBuffer out(test::cl(), CL_MEM_WRITE_ONLY, chains * sizeof(cl_uint));
-    ClKernel k(mlt.program(), "probe_chain_pixel");
-    k.set_args(ds.frame, mlt.state(), cl_uint(chains), out);
+    ClKernel k(MltInspect::program(mlt), "probe_chain_pixel");
+    k.set_args(ds.frame, MltInspect::state(mlt), cl_uint(chains), out);
     k.run(test::cl(), chains);
     std::vector<cl_uint> pixel(chains);
     out.read(test::cl(), pixel.data());
@@ -175,14 +178,15 @@ void check_splat_image(Target target, bool kelemen = false) {
     std::vector<double> sum(bins * bins, 0.0), sum2(bins * bins, 0.0);
     for (int r = 0; r < replicas; ++r) {
         MltOptions opt = test::plain_mlt();
+        MltTestHooks hooks;
         opt.threads = 1024;
         opt.large_step = 0.3f;
         opt.seed = 100 + r;
         opt.burn_in_iters = 64; // b from 2^16 samples
-        opt.test.evaluator = "test/cl/eval_target.cl";
+        hooks.evaluator = "test/cl/eval_target.cl";
         opt.target = target;
         opt.kelemen = kelemen;
-        MltRenderer mlt(test::cl(), ds, opt);
+        MltRenderer mlt(test::cl(), ds, opt, hooks);
         mlt.prepare();
         mlt.step(400);
         Image img = mlt.image();
@@ -251,11 +255,12 @@ TEST(MltPrecision, PackedAndFloat32StatesAgreeWithinNoise) {
     for (int build = 0; build < 2; ++build)
         for (int r = 0; r < replicas; ++r) {
             MltOptions opt = test::plain_mlt();
+            MltTestHooks hooks;
             opt.threads = 2048;
             opt.seed = 300 + r + 50 * build;
             opt.burn_in_iters = 8;
-            opt.test.float32_states = build == 1;
-            MltRenderer mlt(test::cl(), ds, opt);
+            hooks.float32_states = build == 1;
+            MltRenderer mlt(test::cl(), ds, opt, hooks);
             mlt.prepare();
             mlt.step(64);
             Image img = mlt.image();
@@ -332,13 +337,14 @@ TEST(MltStaySplat, GatheredStaysEqualEagerSplatsWithinRounding) {
         MltStats stats[2];
         for (int eager = 0; eager < 2; ++eager) {
             MltOptions opt = test::plain_mlt();
+            MltTestHooks hooks;
             opt.threads = 1024;
             opt.large_step = 0.1f;
             opt.seed = 7;
             opt.proposals = c.proposals;
-            opt.test.eager_stay = eager;
+            hooks.eager_stay = eager;
             opt.film_atomics64 = true;
-            MltRenderer mlt(test::cl(), ds, opt);
+            MltRenderer mlt(test::cl(), ds, opt, hooks);
             mlt.prepare();
             std::vector<std::uint32_t> held = test::hold_chains(mlt, 32);
             mlt.step(150);

@@ -262,8 +262,7 @@ TEST(MpiRender, TwoStageRanksFixOneTargetFromAllTheirSamples) {
             opt.seed = rank_seed(9, r);
             MltRenderer mlt(test::cl(), ds, opt);
             mlt.sample_starts(me);
-            weights.emplace_back(mlt.weights().bytes() / sizeof(float));
-            mlt.weights().read(test::cl(), weights.back().data());
+            weights.push_back(MltInspect::weights(mlt));
         }
     }
     ASSERT_TRUE(ex.complete);

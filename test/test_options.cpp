@@ -64,8 +64,6 @@ TEST(Options, EmptyCommandLineGivesTheLibraryDefaults) {
     EXPECT_EQ(m.seed, lib.seed);
     EXPECT_EQ(m.burn_in, lib.burn_in);
     EXPECT_EQ(m.burn_in_iters, lib.burn_in_iters);
-    EXPECT_EQ(m.test.float32_states, lib.test.float32_states);
-    EXPECT_EQ(m.test.eager_stay, lib.test.eager_stay);
     EXPECT_EQ(m.film_atomics64, lib.film_atomics64);
     EXPECT_EQ(m.max_alloc_bytes, lib.max_alloc_bytes);
     EXPECT_EQ(m.film_pass_mutations, lib.film_pass_mutations);
@@ -74,8 +72,6 @@ TEST(Options, EmptyCommandLineGivesTheLibraryDefaults) {
     EXPECT_EQ(m.omc_effort, lib.omc_effort);
     EXPECT_EQ(m.target, lib.target);
     EXPECT_EQ(m.kelemen, lib.kelemen);
-    EXPECT_EQ(m.test.evaluator, lib.test.evaluator);
-    EXPECT_EQ(m.test.extra_files, lib.test.extra_files);
     EXPECT_FALSE(o.threads) << "--threads auto";
     // Path tracing: PathTracer's default sampler, and the roulette of Scene.
     EXPECT_EQ(o.sampler, kDefaultPtSampler);

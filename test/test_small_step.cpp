@@ -45,9 +45,10 @@ double reference_delta(std::uint32_t r, int bits) {
 TEST(SmallStep, IntegerDeltaFollowsTheExponentialAndIsSymmetric) {
     DeviceScene ds = test::layout_only_scene(features(300));
     MltOptions opt = test::plain_mlt();
+    MltTestHooks hooks;
     opt.threads = 64;
-    opt.test.extra_files = {kProbeFile};
-    MltRenderer mlt(test::cl(), ds, opt);
+    hooks.extra_files = {kProbeFile};
+    MltRenderer mlt(test::cl(), ds, opt, hooks);
     const std::uint32_t n = 1u << 20;
     std::vector<cl_uint> r(2 * n), v(2 * n);
     std::mt19937 rng(17);
@@ -69,7 +70,7 @@ TEST(SmallStep, IntegerDeltaFollowsTheExponentialAndIsSymmetric) {
         for (std::size_t i = 0; i < v.size(); ++i)
             vb[i] = v[i] & mask;
         ClBuffer vbuf(test::cl(), CL_MEM_READ_ONLY, vb.size() * 4, vb.data());
-        ClKernel k(mlt.program(), "probe_small_step");
+        ClKernel k(MltInspect::program(mlt), "probe_small_step");
         k.set_args(rb, vbuf, cl_uint(bits), cl_uint(r.size()), out);
         k.run(test::cl(), r.size());
         std::vector<cl_uint> moved(r.size());
@@ -114,27 +115,28 @@ CommitRun run_commit(std::uint32_t lights) {
     run.layout = ds.layout;
     run.dims = std::uint32_t(ds.layout.vector_dims());
     MltOptions opt = test::plain_mlt();
+    MltTestHooks hooks;
     opt.threads = run.chains;
-    opt.test.extra_files = {kProbeFile};
-    MltRenderer mlt(test::cl(), ds, opt);
-    run.before.resize(mlt.state().bytes() / 4);
+    hooks.extra_files = {kProbeFile};
+    MltRenderer mlt(test::cl(), ds, opt, hooks);
+    run.before.resize(MltInspect::state(mlt).bytes() / 4);
     std::mt19937 rng(lights);
     for (cl_uint& w : run.before)
         w = rng();
-    mlt.state().write(test::cl(), run.before.data());
+    MltInspect::state(mlt).write(test::cl(), run.before.data());
     std::size_t numbers = std::size_t(run.chains) * run.dims;
     ClBuffer lazy(test::cl(), CL_MEM_WRITE_ONLY, numbers * 4);
     ClBuffer stored(test::cl(), CL_MEM_WRITE_ONLY, numbers * 4);
-    ClKernel k(mlt.program(), "probe_commit_agrees");
-    k.set_args(mlt.state(), cl_uint(run.chains), cl_uint(ds.layout.depth), cl_ulong(7), lazy,
-               stored);
+    ClKernel k(MltInspect::program(mlt), "probe_commit_agrees");
+    k.set_args(MltInspect::state(mlt), cl_uint(run.chains), cl_uint(ds.layout.depth), cl_ulong(7),
+               lazy, stored);
     k.run(test::cl(), run.chains);
     run.lazy.resize(numbers);
     run.stored.resize(numbers);
     run.after.resize(run.before.size());
     lazy.read(test::cl(), run.lazy.data());
     stored.read(test::cl(), run.stored.data());
-    mlt.state().read(test::cl(), run.after.data());
+    MltInspect::state(mlt).read(test::cl(), run.after.data());
     return run;
 }
 
@@ -225,16 +227,18 @@ TEST(SmallStep, LazyPathEqualsCommittedPath) {
     ASSERT_EQ(furnace.layout.bits[kLightPick], 17);
     for (const DeviceScene* ds : {&water, &furnace}) {
         MltOptions opt = test::plain_mlt();
+        MltTestHooks hooks;
         opt.threads = 1024;
-        opt.test.extra_files = {kProbeFile};
-        MltRenderer mlt(test::cl(), *ds, opt);
+        hooks.extra_files = {kProbeFile};
+        MltRenderer mlt(test::cl(), *ds, opt, hooks);
         mlt.prepare();
-        ClBuffer eager(test::cl(), CL_MEM_READ_WRITE, mlt.state().bytes());
+        ClBuffer eager(test::cl(), CL_MEM_READ_WRITE, MltInspect::state(mlt).bytes());
         ClBuffer out(test::cl(), CL_MEM_WRITE_ONLY,
                      std::size_t(opt.threads) * 3 * sizeof(cl_float4));
         SceneBuffers sb(test::cl(), *ds);
-        ClKernel k(mlt.program(), "probe_lazy_eager");
-        k.set_args(sb, mlt.state(), mlt.values(), eager, cl_uint(opt.threads), cl_ulong(101), out);
+        ClKernel k(MltInspect::program(mlt), "probe_lazy_eager");
+        k.set_args(sb, MltInspect::state(mlt), MltInspect::values(mlt), eager, cl_uint(opt.threads),
+                   cl_ulong(101), out);
         k.run(test::cl(), opt.threads);
         std::vector<cl_float4> f(std::size_t(opt.threads) * 3);
         out.read(test::cl(), f.data());

@@ -67,13 +67,13 @@ void expect_tracks_pt(const MltRun& run, const Image& pt, double share_tol) {
 
 std::vector<ChainValue> chain_values(const MltRenderer& mlt) {
     std::vector<ChainValue> v(mlt.chains());
-    mlt.values().read(test::cl(), v.data());
+    MltInspect::values(mlt).read(test::cl(), v.data());
     return v;
 }
 
 std::vector<std::uint32_t> chain_state(const MltRenderer& mlt) {
-    std::vector<std::uint32_t> s(mlt.state().bytes() / 4);
-    mlt.state().read(test::cl(), s.data());
+    std::vector<std::uint32_t> s(MltInspect::state(mlt).bytes() / 4);
+    MltInspect::state(mlt).read(test::cl(), s.data());
     return s;
 }
 

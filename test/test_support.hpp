@@ -17,6 +17,20 @@
 #include <string>
 #include <vector>
 
+namespace smallmlt {
+
+// The device's side of an MLT render, for the probes that read or bind its
+// buffers (MltRenderer names it its friend).
+struct MltInspect {
+    static const ClBuffer& state(const MltRenderer& m) { return m.state_; }
+    static const ClBuffer& values(const MltRenderer& m) { return m.values_; }
+    static const ClBuffer& picks(const MltRenderer& m) { return m.picks_; } // (round, index)
+    static std::vector<float> weights(const MltRenderer& m) { return m.target_.read(); }
+    static cl_program program(const MltRenderer& m) { return m.program_.p; }
+};
+
+} // namespace smallmlt
+
 namespace smallmlt::test {
 
 // Device 0, created once (kernel builds are cached per source by PoCL).
@@ -111,11 +125,12 @@ inline std::vector<Image> render_pt_batches(const DeviceScene& ds, std::uint64_t
 // committed state replayed (F, live bounces in w).
 inline std::vector<cl_float4> lazy_eager_committed(const MltRenderer& mlt, const DeviceScene& ds,
                                                    std::uint32_t chains) {
-    ClBuffer eager(cl(), CL_MEM_READ_WRITE, mlt.state().bytes());
+    ClBuffer eager(cl(), CL_MEM_READ_WRITE, MltInspect::state(mlt).bytes());
     ClBuffer out(cl(), CL_MEM_WRITE_ONLY, std::size_t(chains) * 3 * sizeof(cl_float4));
     SceneBuffers sb(cl(), ds);
-    ClKernel k(mlt.program(), "probe_lazy_eager");
-    k.set_args(sb, mlt.state(), mlt.values(), eager, cl_uint(chains), cl_ulong(99), out);
+    ClKernel k(MltInspect::program(mlt), "probe_lazy_eager");
+    k.set_args(sb, MltInspect::state(mlt), MltInspect::values(mlt), eager, cl_uint(chains),
+               cl_ulong(99), out);
     k.run(cl(), chains);
     std::vector<cl_float4> f(std::size_t(chains) * 3);
     out.read(cl(), f.data());
@@ -129,20 +144,20 @@ inline std::vector<cl_float4> lazy_eager_committed(const MltRenderer& mlt, const
 // u < K never passes it. Returns the chains held.
 inline std::vector<std::uint32_t> hold_chains(const MltRenderer& mlt, std::uint32_t every) {
     std::vector<ChainValue> v(mlt.chains());
-    mlt.values().read(cl(), v.data());
+    MltInspect::values(mlt).read(cl(), v.data());
     std::vector<std::uint32_t> held;
     for (std::uint32_t c = 0; c < mlt.chains(); c += every) {
         v[c].rgb[0] = v[c].rgb[1] = v[c].rgb[2] = 1e30f;
         held.push_back(c);
     }
-    mlt.values().write(cl(), v.data());
+    MltInspect::values(mlt).write(cl(), v.data());
     return held;
 }
 
 // The current run of rejections of each chain of `mlt`.
 inline std::vector<std::uint32_t> chain_runs(const MltRenderer& mlt) {
     std::vector<ChainValue> v(mlt.chains());
-    mlt.values().read(cl(), v.data());
+    MltInspect::values(mlt).read(cl(), v.data());
     std::vector<std::uint32_t> runs;
     for (const ChainValue& x : v)
         runs.push_back(x.meta >> CHAIN_RUN_SHIFT);

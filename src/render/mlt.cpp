@@ -3,8 +3,8 @@
 #include "base/clock.hpp"
 #include "base/color.hpp"
 #include "base/error.hpp"
-#include "base/rng.hpp"
 #include "device/scan.hpp"
+#include "render/mlt_seeds.hpp"
 #include "render/programs.hpp"
 #include "render/ranks.hpp"
 
@@ -17,30 +17,27 @@ namespace smallmlt {
 
 namespace {
 
-// Seeds of the kinds of streams of a render.
-constexpr std::uint64_t kPurposeOmc = 1, kPurposePick = 2, kPurposeStep = 3, kPurposePixel = 4,
-                        kPurposeFilmOffset = 5;
-
-std::string program_defines(const ClContext& cl, const DeviceScene& ds, const MltOptions& opt) {
+std::string program_defines(const ClContext& cl, const DeviceScene& ds, const MltOptions& opt,
+                            const MltTestHooks& hooks) {
     std::string d = ds.layout.defines() + scan_defines(cl.device()) + "#define MLT_GROUP " +
                     std::to_string(kDefaultWorkGroup) + "u\n";
-    if (opt.test.float32_states) d += "#define PSS_FLOAT32 1\n";
-    if (opt.test.eager_stay) d += "#define MLT_EAGER_STAY 1\n";
+    if (hooks.float32_states) d += "#define PSS_FLOAT32 1\n";
+    if (hooks.eager_stay) d += "#define MLT_EAGER_STAY 1\n";
     if (opt.split != Split::None || opt.target == Target::TwoStage)
         d += "#define MLT_BURN_IN_SAMPLES 1\n";
     if (opt.film_atomics64) d += "#define FILM_ATOMICS64 1\n";
     return d + split_defines(opt.split);
 }
 
-ChainShape chain_shape(const MltOptions& opt) {
-    ChainShape s{opt.threads, opt.proposals, opt.test.float32_states, opt.film_atomics64,
+ChainShape chain_shape(const MltOptions& opt, const MltTestHooks& hooks) {
+    ChainShape s{opt.threads, opt.proposals, hooks.float32_states, opt.film_atomics64,
                  opt.split != Split::None};
     s.target_cells = opt.target == Target::TwoStage ? kTargetMaxCells : 1;
     return s;
 }
 
-const MltOptions& check_options(const MltOptions& opt) {
-    check_chain_shape(chain_shape(opt));
+const MltOptions& check_options(const MltOptions& opt, const MltTestHooks& hooks) {
+    check_chain_shape(chain_shape(opt, hooks));
     if (opt.stuck_run == 0) throw UsageError("--stuck-run: must be at least 1");
     return opt;
 }
@@ -58,11 +55,6 @@ std::uint64_t max_alloc(const ClContext& cl, const MltOptions& opt) {
 // Modes of the mlt_owed kernel (cl/kernels/mlt.cl).
 constexpr cl_uint kOwedAdd = 0, kOwedUndo = 1, kOwedFlush = 2;
 
-// A luminance sum in MLT_B_FRAC_BITS fixed point, as a number.
-double fixed_lum(std::uint64_t v) {
-    return double(v) / double(1u << MLT_B_FRAC_BITS);
-}
-
 } // namespace
 
 void mlt_require_device(const DeviceInfo& d, const MltOptions& opt) {
@@ -72,122 +64,49 @@ void mlt_require_device(const DeviceInfo& d, const MltOptions& opt) {
                          "leave out --film-atomics 64");
 }
 
-std::vector<std::string> mlt_program_files(const MltOptions& opt) {
+std::vector<std::string> mlt_program_files(const MltTestHooks& hooks) {
     ProgramSpec spec;
     spec.program = Program::Mlt;
-    spec.evaluator = opt.test.evaluator;
-    spec.extra = opt.test.extra_files;
+    spec.evaluator = hooks.evaluator;
+    spec.extra = hooks.extra_files;
     return program_files(spec);
 }
 
-MltRenderer::MltRenderer(const ClContext& cl, const DeviceScene& ds, const MltOptions& opt)
-    : cl_(cl), ds_(require_device(cl, ds, opt)), opt_(check_options(opt)),
-      plan_(plan_mlt(ds, chain_shape(opt), scan_work_group(cl.device()), max_alloc(cl, opt))),
-      program_(cl.build(mlt_program_files(opt), program_defines(cl, ds, opt))),
-      k_lum_(program_.p, "mlt_luminance"), k_init_(program_.p, "mlt_init"),
-      k_step_(program_.p, "mlt_step"), k_owed_(program_.p, "mlt_owed"), scene_(cl, ds),
+MltRenderer::MltRenderer(const ClContext& cl, const DeviceScene& ds, const MltOptions& opt,
+                         const MltTestHooks& hooks)
+    : cl_(cl), ds_(require_device(cl, ds, opt)), opt_(check_options(opt, hooks)), hooks_(hooks),
+      plan_(
+          plan_mlt(ds, chain_shape(opt, hooks), scan_work_group(cl.device()), max_alloc(cl, opt))),
+      program_(cl.build(mlt_program_files(hooks), program_defines(cl, ds, opt, hooks))),
+      k_init_(program_.p, "mlt_init"), k_step_(program_.p, "mlt_step"),
+      k_owed_(program_.p, "mlt_owed"), scene_(cl, ds),
       state_(cl, CL_MEM_READ_WRITE, plan_.bytes(Buffer::State)),
       values_(cl, CL_MEM_READ_WRITE, plan_.bytes(Buffer::Values)),
       stats_(cl, CL_MEM_READ_WRITE, plan_.bytes(Buffer::Stats)),
       picks_(cl, CL_MEM_READ_WRITE, plan_.bytes(Buffer::Picks)),
-      weight_(cl, CL_MEM_READ_WRITE, plan_.bytes(Buffer::TargetWeights)), cells_(target_one_cell()),
-      burn_in_film_(smallmlt::burn_in_film(derive_seed(opt.seed, kPurposePixel),
-                                           derive_seed(opt.seed, kPurposeFilmOffset),
+      target_(cl, plan_.bytes(Buffer::TargetWeights)),
+      burn_in_film_(smallmlt::burn_in_film(mlt_seed(opt.seed, MltStream::Pixel),
+                                           mlt_seed(opt.seed, MltStream::FilmOffset),
                                            std::uint32_t(pixels()), opt.threads)),
+      burn_in_(cl, program_.p, opt, pixels()),
       film_(cl, pixels(),
             plan_mlt_film(pixels(), opt.threads, max_alloc(cl, opt), opt.film_atomics64,
                           opt.film_pass_mutations, opt.kelemen ? 2.0 : 1.0)) {
     split_ = opt.split;
-    if (opt.split != Split::None || opt.target == Target::TwoStage)
-        burn_in_parts_ = BurnInParts(pixels());
     if (opt.split != Split::None)
         omc_ = make_omc_part(split_ == Split::Auto ? kChainsSplit : split_);
     state_.fill_zero(cl);
     stats_.fill_zero(cl);
     picks_.fill_zero(cl);
-    std::vector<float> ones(weight_.bytes() / sizeof(float), 1.0f);
-    weight_.write(cl, ones.data());
 }
 
 void MltRenderer::sample_starts(RankGroup& ranks) {
-    const std::uint32_t m = opt_.threads, iters = std::max(1u, opt_.burn_in_iters);
-    const std::uint32_t chains = this->chains();
-    // The burn-in's samples come back (pixel, OMC and MLT parts) for a split
-    // and for the two-stage target.
-    const bool samples = !burn_in_parts_.count.empty();
-    // Rounds before `first` only measure the two-stage target's weights.
-    const std::uint32_t first = opt_.target == Target::TwoStage ? iters / 2 : 0;
-    ClBuffer lum(cl_, CL_MEM_READ_WRITE, plan_.bytes(Buffer::Luminance));
-    ClBuffer scan(cl_, CL_MEM_READ_WRITE, plan_.bytes(Buffer::Scan));
-    ClBuffer omc =
-        samples ? ClBuffer(cl_, CL_MEM_READ_WRITE, plan_.bytes(Buffer::OmcSamples)) : ClBuffer();
-    BurnInPicker picker(cl_, program_.p, m);
-    std::vector<float> host(m), host_omc(samples ? 8 * m : 0);
-    std::uint64_t sum = 0;
-    double sum2 = 0;
-    cl_ulong omc_seed = derive_seed(opt_.seed, kPurposeOmc);
-    cl_ulong pick_seed = derive_seed(opt_.seed, kPurposePick);
-    for (std::uint32_t it = 0; it < iters; ++it) {
-        if (it == first && first > 0) fix_target(ranks);
-        k_lum_.set_args(scene_, weight_, cells_, burn_in_film_, state_,
-                        cl_ulong(omc_round_seed(omc_seed, it)), cl_uint(it), cl_uint(m), lum,
-                        samples ? omc : lum, stats_);
-        k_lum_.run(cl_, m);
-        lum.read(cl_, host.data());
-        if (samples) {
-            omc.read(cl_, host_omc.data());
-            burn_in_parts_.add(host_omc);
-        }
-        if (it < first) continue;
-        for (float y : host) {
-            sum += fixed_b_sample(y);
-            sum2 += double(y) * y;
-        }
-        if (opt_.burn_in) picker.add_round(lum, host, m, scan, pick_seed, it, chains, picks_);
-    }
-    if (!opt_.burn_in) {
-        // Fresh samples: round iters, after those that estimated b.
-        std::vector<cl_uint2> fresh(chains);
-        for (std::uint32_t c = 0; c < chains; ++c)
-            fresh[c] = cl_uint2{{iters, c}};
-        picks_.write(cl_, fresh.data());
-    }
-    double n = double(m) * (iters - first), mean = fixed_lum(sum) / n;
-    burn_in_fixed_ = sum;
-    burn_in_sum2_ = sum2;
-    burn_in_samples_ = std::uint64_t(m) * (iters - first);
-    burn_in_variance_ = n > 1 ? std::max(0.0, (sum2 / n - mean * mean) * n / (n - 1)) : 0;
-    if (samples) {
-        mlt_part_b_ = burn_in_parts_.mean(burn_in_parts_.rest);
-        omc_variance_ = burn_in_parts_.variance(burn_in_parts_.omc, burn_in_parts_.omc_y2);
-        mlt_variance_ = burn_in_parts_.variance(burn_in_parts_.rest, burn_in_parts_.rest_y2);
-    }
+    burn_in_.run(ranks, plan_, scene_, target_, burn_in_film_,
+                 MltBurnIn::Chains{state_, stats_, picks_, chains()});
 }
 
-void MltRenderer::fix_target(RankGroup& ranks) {
-    const std::uint32_t w = ds_.frame.width, h = ds_.frame.height;
-    // Every rank's sums and sample count (ranks may run different threads).
-    std::vector<double> sums = burn_in_parts_.rest;
-    sums.push_back(double(std::accumulate(burn_in_parts_.count.begin(), burn_in_parts_.count.end(),
-                                          std::uint64_t(0))));
-    ranks.sum_all(sums);
-    cells_ = target_cells(w, h, std::uint64_t(sums.back()));
-    sums.pop_back();
-    std::vector<float> weights = target_weights(cells_, w, h, sums);
-    weights.resize(weight_.bytes() / sizeof(float), 1.0f); // at most kTargetMaxCells
-    weight_.write(cl_, weights.data());
-}
-
-double mlt_b(std::uint64_t lum_fixed, std::uint64_t samples) {
-    return samples ? fixed_lum(lum_fixed) / double(samples) : 0;
-}
-
-MltRenderer::BEstimate MltRenderer::b_estimate(const MltStats& s) const {
-    double n = double(burn_in_samples_) + double(s.large);
-    BEstimate e;
-    e.b = mlt_b(burn_in_fixed_ + s.large_lum, burn_in_samples_ + s.large);
-    e.rel_error = e.b > 0 ? std::sqrt(burn_in_variance_ / n) / e.b : 0;
-    return e;
+BEstimate MltRenderer::b_estimate(const MltStats& s) const {
+    return burn_in_.sums().b(s.large_lum, s.large);
 }
 
 double MltRenderer::b() const {
@@ -202,8 +121,8 @@ void MltRenderer::prepare(RankGroup& ranks) {
     Clock::time_point t0 = Clock::now();
     sample_starts(ranks);
     if (opt_.kelemen)
-        kelemen_pb_ = float(std::clamp(double(large_step_of(opt_)), 0.0, 1.0) *
-                            mlt_b(burn_in_fixed_, burn_in_samples_));
+        kelemen_pb_ =
+            float(std::clamp(double(large_step_of(opt_)), 0.0, 1.0) * burn_in_.sums().b().b);
     if (split_ == Split::Auto) {
         bool pay = ranks.all(chains_pay(mlt_relative_variance()));
         split_ = pay ? kChainsSplit : Split::All;
@@ -218,7 +137,8 @@ void MltRenderer::prepare(RankGroup& ranks) {
 }
 
 double MltRenderer::mlt_relative_variance() const {
-    return mlt_part_relative_variance(mlt_variance_, mlt_part_b_, double(pixels()));
+    return mlt_part_relative_variance(burn_in_.mlt_variance(), burn_in_.mlt_part_b(),
+                                      double(pixels()));
 }
 
 std::unique_ptr<OmcSchedule> MltRenderer::make_omc_part(Split split) const {
@@ -228,39 +148,39 @@ std::unique_ptr<OmcSchedule> MltRenderer::make_omc_part(Split split) const {
     std::uint64_t samples = std::uint64_t(opt_.threads) * rounds + (opt_.burn_in ? 0 : chains());
     std::uint32_t first = burn_in_film_end(burn_in_film_, std::uint32_t(pixels()), samples);
     return std::make_unique<OmcSchedule>(
-        std::make_unique<OmcPartTracer>(cl_, ds_, derive_seed(opt_.seed, kPurposePixel),
+        std::make_unique<OmcPartTracer>(cl_, ds_, mlt_seed(opt_.seed, MltStream::Pixel),
                                         OmcPart{split, &scene_, first}),
         opt_.threads, opt_.omc_effort);
 }
 
 void MltRenderer::init_chains() {
-    cl_ulong omc_seed = derive_seed(opt_.seed, kPurposeOmc);
-    k_init_.set_args(scene_, weight_, cells_, burn_in_film_, state_, values_, cl_uint(chains()),
-                     omc_seed, picks_, stats_);
+    cl_ulong omc_seed = mlt_seed(opt_.seed, MltStream::Omc);
+    k_init_.set_args(scene_, target_, burn_in_film_, state_, values_, cl_uint(chains()), omc_seed,
+                     picks_, stats_);
     k_init_.enqueue(cl_, chains());
     cl_.finish("kernel mlt_init over " + std::to_string(chains()) + " chains");
 }
 
 void MltRenderer::owed(std::uint32_t mode) const {
-    k_owed_.set_args(ds_.frame, weight_, cells_, cl_float(kelemen_pb_), state_, values_,
-                     cl_uint(chains()), cl_ulong(derive_seed(opt_.seed, kPurposeStep)),
-                     cl_uint(iterations_), film_, cl_uint(mode));
+    k_owed_.set_args(ds_.frame, target_, cl_float(kelemen_pb_), state_, values_, cl_uint(chains()),
+                     cl_ulong(mlt_seed(opt_.seed, MltStream::Step)), cl_uint(iterations_), film_,
+                     cl_uint(mode));
     k_owed_.enqueue(cl_, chains());
 }
 
 void MltRenderer::step(std::uint32_t n) {
-    cl_ulong seed = derive_seed(opt_.seed, kPurposeStep);
+    cl_ulong seed = mlt_seed(opt_.seed, MltStream::Step);
     double p = std::clamp(double(large_step_of(opt_)), 0.0, 1.0);
     cl_uint threshold = p >= 1.0 ? 0xFFFFFFFFu : cl_uint(p * 4294967296.0);
     const std::uint32_t drain_every = film_.plan().steps_per_drain;
     Clock::time_point t0 = Clock::now();
     if (split_ == Split::Auto) split_ = kChainsSplit; // no prepare(): the chains run
-    const bool chains = burn_in_fixed_ > 0 && split_ != Split::All;
+    const bool chains = burn_in_.sums().lum_fixed > 0 && split_ != Split::All;
     for (std::uint32_t i = 0; i < n; ++i) {
         cl_uint iteration = ++iterations_;
         if (chains) {
             ++steps_run_;
-            k_step_.set_args(scene_, weight_, cells_, state_, values_, cl_uint(opt_.threads),
+            k_step_.set_args(scene_, target_, state_, values_, cl_uint(opt_.threads),
                              cl_uint(opt_.proposals), seed, iteration, threshold,
                              cl_float(kelemen_pb_), film_, stats_, cl_uint(opt_.stuck_run));
             k_step_.enqueue(cl_, opt_.threads);
@@ -279,8 +199,8 @@ void MltRenderer::step(std::uint32_t n) {
 
 SplitCosts MltRenderer::split_costs() const {
     SplitCosts c;
-    c.omc_variance = omc_variance_;
-    c.b = mlt_part_b_;
+    c.omc_variance = burn_in_.omc_variance();
+    c.b = burn_in_.mlt_part_b();
     c.pixels = double(pixels());
     c.threads = double(opt_.threads);
     c.mutation_rays = double(stats().rays) / c.threads;
@@ -288,13 +208,14 @@ SplitCosts MltRenderer::split_costs() const {
 }
 
 bool MltRenderer::finished() const {
-    if (!prepared_ || burn_in_fixed_ > 0) return false;
-    return !omc_ || std::none_of(burn_in_parts_.omc.begin(), burn_in_parts_.omc.end(),
-                                 [](double v) { return v > 0; });
+    if (!prepared_ || burn_in_.sums().lum_fixed > 0) return false;
+    const BurnInParts& parts = burn_in_.parts();
+    return !omc_ ||
+           std::none_of(parts.omc.begin(), parts.omc.end(), [](double v) { return v > 0; });
 }
 
 std::uint32_t MltRenderer::state_bytes_per_chain() const {
-    return ds_.layout.chain_bytes(opt_.test.float32_states);
+    return ds_.layout.chain_bytes(hooks_.float32_states);
 }
 
 MltStats MltRenderer::stats() const {
@@ -315,7 +236,7 @@ MltReport MltRenderer::report() const {
     r.finished = finished();
     r.split = split_;
     r.split_asked = opt_.split;
-    r.burn_in_lit = burn_in_fixed_ > 0;
+    r.burn_in_lit = burn_in_.sums().lum_fixed > 0;
     r.burn_in_samples = std::uint64_t(opt_.threads) * opt_.burn_in_iters;
     r.burn_in_spp = double(opt_.threads) * std::max(1u, opt_.burn_in_iters) / double(pixels());
     r.chains = chains();
@@ -333,7 +254,7 @@ MltReport MltRenderer::report() const {
     r.kelemen = opt_.kelemen;
     r.kelemen_pb = kelemen_pb_;
     r.two_stage = opt_.target == Target::TwoStage;
-    r.target_cells = target_cell_count(cells_, ds_.frame.height);
+    r.target_cells = target_cell_count(target_.cells(), ds_.frame.height);
     return r;
 }
 
@@ -363,16 +284,16 @@ MltTally MltRenderer::mlt_tally() const {
         w <<= shift;
     MltStats s = stats();
     t.mutations = s.mutations;
-    t.burn_in_lum = burn_in_fixed_;
-    t.burn_in_samples = burn_in_samples_;
+    t.burn_in_lum = burn_in_.sums().lum_fixed;
+    t.burn_in_samples = burn_in_.sums().samples;
     t.large_lum = s.large_lum;
     t.large = s.large;
-    t.burn_in_lum2 = burn_in_sum2_;
+    t.burn_in_lum2 = burn_in_.sums().lum2;
     if (omc_) {
         Tally o = omc_->part().tally(); // spp, then sums per pixel and channel
         t.omc_spp = o.ints.at(0);
         t.omc_sums = o.reals;
-        const BurnInParts& b = burn_in_parts_;
+        const BurnInParts& b = burn_in_.parts();
         t.burn_in_landed = b.count;
         t.burn_in_omc = b.omc;
         if (split_ == Split::All) // the burn-in's whole paths

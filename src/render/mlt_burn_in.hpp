@@ -1,0 +1,79 @@
+// The burn-in of an MLT render by OMC (Frolov and Galaktionov, section
+// 3.1): rounds of one OMC sample per thread (cl/kernels/mlt.cl,
+// mlt_luminance) that pick the chains' starts (BurnInPicker), make b's first
+// estimate, and, for a split or the two-stage target, leave their paths'
+// parts per pixel (BurnInParts). With the two-stage target, the first half
+// of the rounds fixes the target's weights and only the second estimates b
+// and picks the starts.
+#pragma once
+#include "device/memory_plan.hpp"
+#include "device/ocl.hpp"
+#include "device/scene_buffers.hpp"
+#include "render/burn_in.hpp"
+#include "render/mlt_options.hpp"
+#include "render/ranks.hpp"
+#include "render/target_buffer.hpp"
+
+#include <cstdint>
+
+namespace smallmlt {
+
+// b from a fixed-point sum of `samples` luminances (cl/core/fixed_point.h).
+double mlt_b(std::uint64_t lum_fixed, std::uint64_t samples);
+
+// b and its relative standard error.
+struct BEstimate {
+    double b = 0, rel_error = 0;
+};
+
+// What b's estimate sums over the burn-in's samples (those that estimate
+// b: after the two-stage target is fixed).
+struct BurnInSums {
+    std::uint64_t lum_fixed = 0; // sum of I, MLT_B_FRAC_BITS fixed point
+    std::uint64_t samples = 0;
+    double lum2 = 0;     // sum of I^2
+    double variance = 0; // of one sample's I (unbiased)
+    // b from these and `large` large steps of fixed-point sum large_lum
+    // (each an OMC sample of I), with the error of the burn-in's variance
+    // over all of them.
+    BEstimate b(std::uint64_t large_lum = 0, std::uint64_t large = 0) const;
+};
+
+class MltBurnIn {
+  public:
+    // The device's buffers a burn-in writes: the chains' states (scratch for
+    // the paths), the step counters, and one pick (round, index) per chain.
+    struct Chains {
+        const ClBuffer &state, &stats, &picks;
+        std::uint32_t count;
+    };
+    // `program` holds mlt_luminance and the picker's kernels; the parts per
+    // pixel are kept for `pixels` pixels where `opt` needs them.
+    MltBurnIn(const ClContext& cl, cl_program program, const MltOptions& opt, std::uint64_t pixels);
+    // Runs every round on the rank (ranks meet only where the two-stage
+    // target is fixed). Without burn-in, the picks are fresh samples.
+    void run(RankGroup& ranks, const MemoryPlan& plan, const SceneBuffers& scene,
+             TargetBuffer& target, const BurnInFilm& film, const Chains& chains);
+
+    const BurnInSums& sums() const { return sums_; }
+    // The paths' parts per pixel; empty unless a split or the two-stage
+    // target needs them.
+    const BurnInParts& parts() const { return parts_; }
+    bool keeps_parts() const { return !parts_.count.empty(); }
+    // V_o and V_m of split.hpp and the MLT part's mean luminance, from the
+    // parts (0 without them).
+    double omc_variance() const { return omc_variance_; }
+    double mlt_variance() const { return mlt_variance_; }
+    double mlt_part_b() const { return mlt_part_b_; }
+
+  private:
+    const ClContext& cl_;
+    cl_program program_;
+    MltOptions opt_;
+    ClKernel k_lum_;
+    BurnInParts parts_;
+    BurnInSums sums_;
+    double omc_variance_ = 0, mlt_variance_ = 0, mlt_part_b_ = 0;
+};
+
+} // namespace smallmlt

@@ -1,0 +1,90 @@
+// An MLT render's options and the tests' hooks, with the defaults that
+// the command line shares (src/app/options.cpp).
+#pragma once
+#include "render/mlt_film.hpp"
+#include "render/split.hpp"
+#include "render/target.hpp"
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace smallmlt {
+
+constexpr std::uint32_t kDefaultStuckRun = 1000;
+// Defaults chosen by the benches of doc/RESULTS.md: Kelemen's weights, with
+// which large steps pay more often than with expected values alone.
+constexpr bool kDefaultKelemen = true;
+constexpr float kDefaultLargeStepKelemen = 0.3f;  // with burn-in and Kelemen's weights
+constexpr float kDefaultLargeStepBurnIn = 0.1f;   // with burn-in and expected values
+constexpr float kDefaultLargeStepNoBurnIn = 0.5f; // the paper's baseline without
+
+// What tests change in an MLT render besides its options, passed to the
+// renderer apart from them (the command line never sets these): reference
+// builds to compare against, and the program's evaluator and probes.
+struct MltTestHooks {
+    bool float32_states = false; // unpacked float32 states
+    bool eager_stay = false;     // splat x's stay weight at every step
+    // The file that defines eval_state: cl/path/eval_path.cl renders the
+    // scene; the sampler tests use test/cl/eval_target.cl, a known target
+    // (2D, or with bounces on a layout that has bounce slots).
+    std::string evaluator = "cl/path/eval_path.cl";
+    std::vector<std::string> extra_files; // appended to the program (test probes)
+};
+
+// An MLT render's options. The defaults are the command line's: `render`
+// fills these fields from its flags (src/app/options.cpp), and
+// test/test_options.cpp checks that an empty command line leaves them as
+// they are. Only threads and max_alloc_bytes differ: the command line fits
+// them to the device.
+struct MltOptions {
+    std::uint32_t threads = 1u << 16; // N work-items
+    std::uint32_t proposals = 1;      // K proposals per chain: N / K chains (a power of two <= 64)
+    // Probability that a step is large; unset: default_large_step (large_step_of).
+    std::optional<float> large_step;
+    std::uint64_t seed = 1;
+    // Burn-in by OMC (Frolov and Galaktionov, section 3.1): burn_in_iters
+    // rounds of one OMC sample per thread; each chain starts at a sample
+    // drawn from all rounds' samples in proportion to luminance (a weighted
+    // reservoir over rounds, BurnInPicker). All threads x iters samples
+    // estimate b. Without burn-in, chains start at fresh OMC samples.
+    bool burn_in = true;
+    std::uint32_t burn_in_iters = 32; // chosen by measurement (doc/RESULTS.md)
+    // The 64-bit film of 64-bit atomics (reference build; needs
+    // cl_khr_int64_base_atomics); the default needs only 32-bit ones.
+    bool film_atomics64 = false;
+    // The largest allocation the film's bands must fit (0: the device's).
+    std::uint64_t max_alloc_bytes = 0;
+    // Mutations between drains of the 32-bit film (src/render/mlt_film.hpp).
+    std::uint64_t film_pass_mutations = kFilmPassMutations;
+    // A chain that rejects this many proposals in a row counts as stuck
+    // (reported, not acted on; doc/stability.md).
+    std::uint32_t stuck_run = kDefaultStuckRun;
+    // What the chains render (src/render/split.hpp): with a split, the OMC
+    // part is rendered by per-pixel samples beside them, omc_effort times
+    // the time the rule of split.hpp gives it, and by the burn-in's paths.
+    Split split = kDefaultSplit;
+    double omc_effort = 1.0;
+    // The chains' target (src/render/target.hpp).
+    Target target = kDefaultTarget;
+    // Kelemen's weights (Kelemen et al. 2002, section 5; cl/mlt/mlt_step.cl):
+    // large steps also count as independent samples, combined with the
+    // chains' expected values by the balance heuristic. Off: expected values
+    // alone, and the image's mean is b.
+    bool kelemen = kDefaultKelemen;
+};
+
+// The large step's probability where none is given: it depends on burn-in
+// and the weights.
+constexpr float default_large_step(bool burn_in, bool kelemen) {
+    return !burn_in  ? kDefaultLargeStepNoBurnIn
+           : kelemen ? kDefaultLargeStepKelemen
+                     : kDefaultLargeStepBurnIn;
+}
+// The large step's probability of a render of `opt`.
+inline float large_step_of(const MltOptions& opt) {
+    return opt.large_step.value_or(default_large_step(opt.burn_in, opt.kelemen));
+}
+
+} // namespace smallmlt
