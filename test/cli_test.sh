@@ -68,9 +68,14 @@ check budget_csv 0 "depth,bits_per_bounce,chain_bytes_packed" -- "$BIN" budget s
 check budget_json 0 "\"reduction\":" -- "$BIN" budget scenes/cornell.scene --format json --threads 1024 --proposals 4
 check budget_proposals 2 "--proposals: 3 is not a power of two" -- "$BIN" budget scenes/cornell.scene --proposals 3
 check budget_small 0 "(emulated)" -- "$BIN" budget scenes/cornell-water.scene --device-mem 64M
-check budget_too_small 1 "it would take 6.9 MiB of device memory" -- "$BIN" budget scenes/cornell-water.scene --device-mem 4M
-check budget_film 0 "film 512x512: 3.0 MiB in 1 band(s)" -- "$BIN" budget scenes/cornell-water.scene --device-mem 16M
-check budget_uhd 0 "film 3840x2160: 94.9 MiB in 2 band(s)" -- "$BIN" budget scenes/cornell.scene --width 3840 --height 2160 --device-mem 256M --depth 1
+check budget_too_small 1 "it would take 12.9 MiB of device memory (--weights expected halves its film of 6.0 MiB)" -- "$BIN" budget scenes/cornell-water.scene --device-mem 4M
+check budget_too_small_expected 1 "it would take 6.9 MiB of device memory" -- "$BIN" budget scenes/cornell-water.scene --device-mem 4M --weights expected
+check budget_film 0 "film 512x512: 6.0 MiB in 2 band(s)" -- "$BIN" budget scenes/cornell-water.scene --device-mem 16M
+check budget_uhd 0 "film 3840x2160: 94.9 MiB in 2 band(s)" -- "$BIN" budget scenes/cornell.scene --width 3840 --height 2160 --device-mem 256M --depth 1 --weights expected
+# Kelemen's weights (the default) keep the large steps' estimate in a second
+# layer of the film: twice the memory, which 256 MiB cannot hold at 4K.
+check budget_uhd_kelemen 0 "film 3840x2160: 189.8 MiB in" -- "$BIN" budget scenes/cornell.scene --width 3840 --height 2160 --device-mem 1G --depth 1
+check budget_uhd_kelemen_too_big 1 "(--weights expected halves its film of 189.8 MiB)" -- "$BIN" budget scenes/cornell.scene --width 3840 --height 2160 --device-mem 256M --depth 1
 check budget_profile 0 "adreno-650 (emulated on" -- "$BIN" budget scenes/cornell-water.scene --profile adreno-650 --depth 1
 check profile_bad 2 "--profile: 'mali' is not a device profile (mali-g610, adreno-650" -- "$BIN" render scenes/cornell.scene --profile mali
 check profile_vc4 1 "runs work-groups of at most 12 work-items" -- "$BIN" render scenes/cornell.scene --profile videocore-iv --out "$DIR/vc4.png"
@@ -80,7 +85,8 @@ check film64_needs_int64 1 "leave out --film-atomics 64" -- "$BIN" render scenes
 absent film64_needs_int64_no_file "$DIR/f64.png"
 # The film's targets on small devices: cornell-water at its own 512x512 film
 # and depth 24 on 16 MiB (largest allocation 4 MiB), by MLT and by PT.
-check water_16m_mlt 0 "film 3.0 MiB in 1 band(s); device memory 7.4 MiB of 8.0 MiB allowed" -- "$BIN" render scenes/cornell-water.scene --device-mem 16M --spp 1 --out "$DIR/w16.pfm"
+check water_16m_mlt 0 "threads: 2048 (auto: 16384 keep the device busy, reduced 8x to fit); film 6.0 MiB in 2 band(s); device memory 7.4 MiB of 8.0 MiB allowed" -- "$BIN" render scenes/cornell-water.scene --device-mem 16M --spp 1 --out "$DIR/w16.pfm"
+check water_16m_mlt_expected 0 "threads: 8192 (auto: 16384 keep the device busy, reduced 2x to fit); film 3.0 MiB in 1 band(s); device memory 7.4 MiB of 8.0 MiB allowed" -- "$BIN" render scenes/cornell-water.scene --device-mem 16M --spp 1 --weights expected --out "$DIR/w16e.pfm"
 check water_16m_pt 0 "film: 3.0 MiB in 1 band(s)" -- "$BIN" render scenes/cornell-water.scene --method pt --device-mem 16M --spp 1 --out "$DIR/w16p.pfm"
 check proposals_ok 0 "x 4 proposals" -- "$BIN" render scenes/cornell.scene --width 8 --height 8 --spp 4 --threads 256 --proposals 4 --out "$DIR/k4.pfm"
 check proposals_pow2 2 "--proposals: 3 is not a power of two" -- "$BIN" render scenes/cornell.scene --proposals 3
@@ -94,7 +100,7 @@ if "$BIN" devices | head -n 1 | grep -q "Portable Computing Language"; then
     # half a second: what is tested is that it fits and renders, and
     # test_film.cpp tests what bands render).
     check uhd_pt 0 "film: 94.9 MiB in 2 band(s)" -- env POCL_MEMORY_LIMIT=1 "$BIN" render scenes/cornell.scene --width 3840 --height 2160 --depth 0 --device-mem 256M --method pt --spp 1 --out "$DIR/uhd.pfm"
-    check uhd_mlt 0 "film 94.9 MiB in 2 band(s)" -- env POCL_MEMORY_LIMIT=1 "$BIN" render scenes/cornell.scene --width 3840 --height 2160 --depth 1 --device-mem 256M --threads 1024 --burn-in-iters 1 --time 0.5 --out "$DIR/uhdm.pfm"
+    check uhd_mlt 0 "film 94.9 MiB in 2 band(s)" -- env POCL_MEMORY_LIMIT=1 "$BIN" render scenes/cornell.scene --width 3840 --height 2160 --depth 1 --device-mem 256M --threads 1024 --burn-in-iters 1 --weights expected --time 0.5 --out "$DIR/uhdm.pfm"
     # PFM: a header, then 3840 x 2160 x 3 floats.
     uhd_written() { [ "$(wc -c < "$DIR/uhdm.pfm")" -gt 99532800 ] && [ "$(wc -c < "$DIR/uhd.pfm")" -gt 99532800 ]; }
     truth uhd_images uhd_written

@@ -172,7 +172,7 @@ INSTANTIATE_TEST_SUITE_P(Proposals, MltSampler, ::testing::Values(1u, 2u, 4u, 8u
 // B bins has mean B (R-1)/(R-3) and variance B Var(t^2). T must stay below
 // its mean plus 3.3 standard deviations (about 0.001 one-sided), and bins
 // where the target is zero get exactly nothing.
-void check_splat_image(Target target, bool kelemen = false) {
+void check_splat_image(Target target, bool kelemen = false, double b0_scale = 1) {
     const int bins = 16, replicas = 16;
     DeviceScene ds = test::layout_only_scene({}, bins, bins);
     std::vector<double> sum(bins * bins, 0.0), sum2(bins * bins, 0.0);
@@ -184,6 +184,7 @@ void check_splat_image(Target target, bool kelemen = false) {
         opt.seed = 100 + r;
         opt.burn_in_iters = 64; // b from 2^16 samples
         hooks.evaluator = "test/cl/eval_target.cl";
+        hooks.b0_scale = b0_scale;
         opt.target = target;
         opt.kelemen = kelemen;
         MltRenderer mlt(test::cl(), ds, opt, hooks);
@@ -236,6 +237,15 @@ TEST(MltSplat, TwoStageImageMatchesTheTarget) {
 // estimate and the large steps' independent one: the image is the same.
 TEST(MltSplat, KelemenImageMatchesTheTarget) {
     check_splat_image(Target::Luminance, true);
+}
+
+// Any b0 makes the balance heuristic's weights sum to 1, so only the scale
+// of the large steps' estimate depends on it: with b0 three times b (as a
+// few threads' burn-in can make it), the image is still the target's. Were
+// the large steps' layer scaled by b, a bin of g = 1 would come out at
+// (1 + p b) / (1 + 3 p b), about 0.6 of its value here.
+TEST(MltSplat, KelemenImageMatchesTheTargetWithAWrongB0) {
+    check_splat_image(Target::Luminance, true, 3);
 }
 
 // MLT renders against PT, block by block, and b against PT's mean:

@@ -34,11 +34,14 @@ TEST(MltStats, RowsJoinBySumOrMaximum) {
 }
 
 // An MLT tally goes to a Tally and back field by field, and a Tally of
-// another shape (a rank with or without a split) is refused.
+// another shape (a rank with or without a split, with or without the large
+// steps' layer) is refused.
 TEST(MltTally, RoundTripsAndRefusesAnotherShape) {
-    MltTally t = MltTally::shaped(4, true);
-    for (std::size_t i = 0; i < t.film.size(); ++i)
+    MltTally t = MltTally::shaped(4, 2, true);
+    for (std::size_t i = 0; i < t.film.size(); ++i) {
         t.film[i] = 100 + i;
+        t.large_film[i] = 200 + i;
+    }
     t.mutations = 7;
     t.burn_in_lum = 8;
     t.burn_in_samples = 9;
@@ -53,9 +56,10 @@ TEST(MltTally, RoundTripsAndRefusesAnotherShape) {
     for (std::size_t i = 0; i < t.burn_in_landed.size(); ++i)
         t.burn_in_landed[i] = 30 + i;
     Tally flat = t.to_tally();
-    MltTally back = MltTally::shaped(4, true);
+    MltTally back = MltTally::shaped(4, 2, true);
     back.read(flat);
     EXPECT_EQ(back.film, t.film);
+    EXPECT_EQ(back.large_film, t.large_film);
     EXPECT_EQ(back.mutations, 7u);
     EXPECT_EQ(back.burn_in_lum, 8u);
     EXPECT_EQ(back.burn_in_samples, 9u);
@@ -66,7 +70,10 @@ TEST(MltTally, RoundTripsAndRefusesAnotherShape) {
     EXPECT_EQ(back.omc_sums, t.omc_sums);
     EXPECT_EQ(back.burn_in_landed, t.burn_in_landed);
     EXPECT_EQ(back.burn_in_omc, t.burn_in_omc);
-    MltTally plain = MltTally::shaped(4, false);
+    MltTally plain = MltTally::shaped(4, 2, false);
     EXPECT_THROW(plain.read(flat), std::logic_error);
     EXPECT_THROW(back.read(plain.to_tally()), std::logic_error);
+    MltTally one_layer = MltTally::shaped(4, 1, true);
+    EXPECT_THROW(one_layer.read(flat), std::logic_error);
+    EXPECT_THROW(back.read(one_layer.to_tally()), std::logic_error);
 }

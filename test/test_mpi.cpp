@@ -282,6 +282,40 @@ TEST(MpiRender, TwoStageRanksFixOneTargetFromAllTheirSamples) {
         EXPECT_EQ(weights[std::size_t(r)], expected) << "rank " << r;
 }
 
+// Kelemen's weights of 2 ranks rebuilt here: both weigh with one b0, that
+// of the union of their burn-ins (the image scales the large steps' layer,
+// summed over ranks, by rank 0's b0, which must then be every rank's).
+TEST(MpiRender, KelemenRanksWeighWithOneB0) {
+    DeviceScene ds = prepare_scene(test::scene("cornell", 16, 16));
+    MltOptions opt;
+    opt.threads = 256;
+    opt.burn_in_iters = 2; // few samples: the ranks' own b differ
+    Exchange ex(2);
+    std::vector<float> pb;
+    std::uint64_t lum = 0, samples = 0;
+    for (int pass = 0; pass < 3; ++pass) {
+        ex.complete = true;
+        pb.clear();
+        lum = samples = 0;
+        for (int r = 0; r < 2; ++r) {
+            ReplayRank me(r, ex);
+            opt.seed = rank_seed(5, r);
+            MltRenderer mlt(test::cl(), ds, opt);
+            mlt.prepare(me);
+            pb.push_back(mlt.report().kelemen_pb);
+            MltTally t = mlt.mlt_tally();
+            lum += t.burn_in_lum;
+            samples += t.burn_in_samples;
+        }
+        if (ex.complete) break;
+    }
+    ASSERT_TRUE(ex.complete);
+    const float want = float(double(large_step_of(opt)) * mlt_b(lum, samples));
+    std::printf("p b0: rank 0 %.6g, rank 1 %.6g, of the union %.6g\n", pb[0], pb[1], want);
+    EXPECT_EQ(pb[0], want);
+    EXPECT_EQ(pb[1], want);
+}
+
 // One rank renders what smallmlt does, bit for bit.
 TEST(MpiRender, OneRankIsSmallmlt) {
     std::string dir = test::scratch_dir("mpi1");

@@ -112,16 +112,23 @@ typedef struct {
 #define CHAIN_RUN_MAX 0x7FFFFFu
 
 /* The MLT film on the device (cl/mlt/film.cl): pixel p lies in band
- * p / band_pixels at pixel index p % band_pixels, as three words (R, G, B)
- * of fixed point with frac_bits fraction bits; scale = 2^frac_bits. Words
- * are 32-bit, except in the 64-bit reference build (FILM_ATOMICS64), whose
- * one band has FILM64_FRAC_BITS. 16 bytes. */
+ * p / band_pixels at pixel index p % band_pixels, as `layers` layers of
+ * three words (R, G, B) of fixed point with frac_bits fraction bits;
+ * scale = 2^frac_bits. Layer FILM_LAYER_CHAINS holds the chains' estimate;
+ * with Kelemen's weights, layer FILM_LAYER_LARGE holds the large steps' own
+ * (src/render/mlt_film.hpp). Words are 32-bit, except in the 64-bit
+ * reference build (FILM_ATOMICS64), whose one band has FILM64_FRAC_BITS.
+ * 20 bytes. */
 typedef struct {
     u32 band_pixels;
     u32 bands;
     u32 frac_bits;
     f32 scale;
+    u32 layers;
 } FilmShape;
+
+#define FILM_LAYER_CHAINS 0u
+#define FILM_LAYER_LARGE 1u
 
 /* The cells of the chains' target weight (cl/mlt/mlt_step.cl, mlt_weight):
  * pixel (x, y) lies in cell (y >> shift) * columns + (x >> shift), of
@@ -153,19 +160,20 @@ typedef struct {
  * order for a test to compare. */
 #define SHARED_LAYOUT(S, F)                                                                        \
     S(Triangle, 48)                                                                                \
-    F(Triangle, material, 12) F(Triangle, e1, 16) F(Triangle, light_pick_prob, 28)                 \
-        F(Triangle, e2, 32) F(Triangle, light_index, 44) S(BvhNode, 32) F(BvhNode, offset, 12)     \
-            F(BvhNode, hi, 16) F(BvhNode, count, 28) S(Material, 48) F(Material, type, 12)         \
-                F(Material, ke, 16) F(Material, ior, 28) F(Material, ks, 32)                       \
-                    F(Material, emissive, 44) S(LightEntry, 8) F(LightEntry, cdf_hi, 4)            \
-                        S(Frame, 64) F(Frame, width, 12) F(Frame, top_left, 16)                    \
-                            F(Frame, height, 28) F(Frame, du, 32) F(Frame, depth, 44)              \
-                                F(Frame, dv, 48) F(Frame, num_lights, 60) S(ChainValue, 20)        \
-                                    F(ChainValue, meta, 12) F(ChainValue, stay, 16)                \
-                                        S(FilmShape, 16) F(FilmShape, bands, 4)                    \
-                                            F(FilmShape, frac_bits, 8) F(FilmShape, scale, 12)     \
-                                                S(TargetCells, 8) F(TargetCells, columns, 4)       \
-                                                    S(BurnInFilm, 20) F(BurnInFilm, seed_hi, 4)    \
+    F(Triangle, material, 12)                                                                      \
+    F(Triangle, e1, 16) F(Triangle, light_pick_prob, 28) F(Triangle, e2, 32)                       \
+        F(Triangle, light_index, 44) S(BvhNode, 32) F(BvhNode, offset, 12) F(BvhNode, hi, 16)      \
+            F(BvhNode, count, 28) S(Material, 48) F(Material, type, 12) F(Material, ke, 16)        \
+                F(Material, ior, 28) F(Material, ks, 32) F(Material, emissive, 44)                 \
+                    S(LightEntry, 8) F(LightEntry, cdf_hi, 4) S(Frame, 64) F(Frame, width, 12)     \
+                        F(Frame, top_left, 16) F(Frame, height, 28) F(Frame, du, 32)               \
+                            F(Frame, depth, 44) F(Frame, dv, 48) F(Frame, num_lights, 60)          \
+                                S(ChainValue, 20) F(ChainValue, meta, 12) F(ChainValue, stay, 16)  \
+                                    S(FilmShape, 20) F(FilmShape, bands, 4)                        \
+                                        F(FilmShape, frac_bits, 8) F(FilmShape, scale, 12)         \
+                                            F(FilmShape, layers, 16) S(TargetCells, 8)             \
+                                                F(TargetCells, columns, 4) S(BurnInFilm, 20)       \
+                                                    F(BurnInFilm, seed_hi, 4)                      \
                                                         F(BurnInFilm, offset, 8)                   \
                                                             F(BurnInFilm, step, 12)                \
                                                                 F(BurnInFilm, per_round, 16)

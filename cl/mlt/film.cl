@@ -35,10 +35,10 @@ typedef struct {
 #error "film_words picks among 4 bands: extend it with FILM_BANDS"
 #endif
 
-/* The three words of a pixel. */
-inline __global FilmWord* film_words(const Film* film, uint pixel) {
+/* The three words of a pixel's layer. */
+inline __global FilmWord* film_words(const Film* film, uint pixel, uint layer) {
     uint band = pixel / film->shape.band_pixels;
-    uint at = 3u * (pixel - band * film->shape.band_pixels);
+    uint at = 3u * ((pixel - band * film->shape.band_pixels) * film->shape.layers + layer);
     if (band == 0u) return film->band0 + at;
     if (band == 1u) return film->band1 + at;
     return (band == 2u ? film->band2 : film->band3) + at;
@@ -82,13 +82,13 @@ inline void film_atomic_add(__global FilmWord* word, FilmWord v) {
 #endif
 }
 
-/* Adds w * f / lum(f) to a pixel (subtracts it with `undo`, exactly, given
- * the same key); returns the global atomics it made. */
-inline uint film_splat(const Film* film, uint pixel, float3 f, float w, ulong key, uint dim,
-                       bool undo) {
+/* Adds w * f / lum(f) to a pixel's layer (subtracts it with `undo`,
+ * exactly, given the same key); returns the global atomics it made. */
+inline uint film_splat(const Film* film, uint pixel, uint layer, float3 f, float w, ulong key,
+                       uint dim, bool undo) {
     FilmWord c[3];
     if (!film_value(film, f, w, key, dim, c)) return 0u;
-    __global FilmWord* words = film_words(film, pixel);
+    __global FilmWord* words = film_words(film, pixel, layer);
     uint n = 0u;
     for (uint i = 0; i < 3u; ++i)
         if (c[i]) {

@@ -10,9 +10,11 @@
  * Kelemen's weights (Kelemen et al. 2002, section 5; MltTarget.kelemen_pb =
  * p b0 > 0), a large proposal is also an independent sample of the image,
  * and the two estimates are combined by the balance heuristic: every splat's
- * 1/I becomes 1/(I + p b0) and a large proposal adds 1 to its a, so the
- * splat's luminance stays at most its weight, which is at most 2 per
- * mutation (src/render/mlt_film.hpp). x's
+ * 1/I becomes 1/(I + p b0), and a large proposal also splats its own
+ * estimate, weight 1, in the film's large-steps layer, which the image
+ * scales by the b0 of these weights where the chains' layer takes b
+ * (src/render/mlt.hpp). A splat's luminance stays at most its weight, at
+ * most 1 per mutation in each layer (src/render/mlt_film.hpp). x's
  * stay weights are gathered in its ChainValue and splatted once, when the
  * chain moves away (MLT_EAGER_STAY, the reference build, splats them at
  * every step). Splats go to the film through 32-bit atomics (cl/mlt/film.cl);
@@ -49,12 +51,14 @@ inline float mlt_weight(const MltTarget* t, uint pixel) {
 
 /* Numbers of a step's stream reserved for the step itself: the large-step
  * choice, the choice of the next state, and the rounding of the proposal's
- * splat (3), of the state's (3) and of what a chain owes at a read (3). */
+ * splat (3), of the state's (3), of what a chain owes at a read (3) and of a
+ * large proposal's own estimate (3). */
 #define MLT_DIM_LARGE 0xFFFFFFF0u
 #define MLT_DIM_ACCEPT 0xFFFFFFF1u
 #define MLT_DIM_ROUND_Y 0xFFFFFFF2u
 #define MLT_DIM_ROUND_X 0xFFFFFFF5u
 #define MLT_DIM_ROUND_OWED 0xFFFFFFF8u
+#define MLT_DIM_ROUND_LARGE 0xFFFFFFFBu
 
 /* Where a work-item sits: proposal i of chain `chain` (of `chains`), whose
  * K work-items start at local index `first` of one work-group. */
@@ -125,7 +129,8 @@ inline EvalResult mlt_evaluate(const SceneView* sc, const Frame* frame, SampleSo
 }
 
 /* Evaluates the proposal y (y->f = G(y)), splats a * F(y)/I(y) at its pixel
- * (Kelemen's weights: (a + 1 if large) * F(y)/(I(y) + p b0)) and returns
+ * (Kelemen's weights: a * F(y)/(I(y) + p b0), and a large proposal's own
+ * estimate F(y)/(I(y) + p b0) in the large steps' layer) and returns
  * a = min(1, I(y)/I(x)) (1 where I(x) = 0), for a chain at x with
  * G(x) = gx. */
 inline float mlt_try_proposal(const SceneView* sc, const Frame* frame, SampleSource* src,
@@ -135,8 +140,12 @@ inline float mlt_try_proposal(const SceneView* sc, const Frame* frame, SampleSou
     *y = mlt_evaluate(sc, frame, src, target, nonfinite, &wy);
     float iy = path_luminance(y->f);
     float a = ix > 0.0f ? fmin(1.0f, iy / ix) : 1.0f;
-    float w = (large && target->kelemen_pb > 0.0f ? a + 1.0f : a) * mlt_kelemen(target, iy);
-    *atomics += film_splat(film, y->pixel, y->f, w / wy, key, MLT_DIM_ROUND_Y, false);
+    float w = mlt_kelemen(target, iy) / wy;
+    *atomics +=
+        film_splat(film, y->pixel, FILM_LAYER_CHAINS, y->f, a * w, key, MLT_DIM_ROUND_Y, false);
+    if (large && target->kelemen_pb > 0.0f)
+        *atomics +=
+            film_splat(film, y->pixel, FILM_LAYER_LARGE, y->f, w, key, MLT_DIM_ROUND_LARGE, false);
     return a;
 }
 
@@ -165,7 +174,7 @@ inline uint mlt_splat_state(const Frame* frame, const MltTarget* target, __globa
     uint pixel = mlt_state_pixel(frame, state, chain, chains);
     float3 g = chain_g(x);
     w *= mlt_kelemen(target, path_luminance(g)) / mlt_weight(target, pixel);
-    return film_splat(film, pixel, g, w, key, dim, undo);
+    return film_splat(film, pixel, FILM_LAYER_CHAINS, g, w, key, dim, undo);
 }
 
 /* The step's number for choosing the next state: uniform in [0, K). */

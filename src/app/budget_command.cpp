@@ -114,10 +114,7 @@ int run_budget(const BudgetOptions& o) {
     if (o.profile) dev = emulate_profile(dev, find_device_profile(*o.profile));
     require_work_group(dev);
     DeviceBudget budget = device_budget(dev, o.device_mem);
-    ChainShape shape;
-    shape.proposals = o.mlt.proposals;
-    shape.omc_part = o.mlt.split != Split::None;
-    shape.target_cells = o.mlt.target == Target::TwoStage ? kTargetMaxCells : 1;
+    ChainShape shape = mlt_chain_shape(o.mlt);
     if (o.threads) {
         shape.threads = *o.threads;
         check_chain_shape(shape);

@@ -204,11 +204,11 @@ const std::vector<Flag> kMltFlags = {
      "per pixel as bright ones (default {default}; doc/design.md, \"The target\")",
      0, 0, nullptr, [] { return std::string(target_name(MltOptions().target)); }},
     {"--large-step", "P", Section::Mlt,
-     [](RenderOptions& o, const FlagValue& v) { o.mlt.large_step = float(v.probability()); },
+     [](JobOptions& o, const FlagValue& v) { o.mlt.large_step = float(v.probability()); },
      "probability that a mutation draws a whole new path (default {default})", 0, 0, nullptr,
      large_step_defaults},
     {"--weights", "expected|kelemen", Section::Mlt,
-     [](RenderOptions& o, const FlagValue& v) {
+     [](JobOptions& o, const FlagValue& v) {
          o.mlt.kelemen = v.pick({false, true});
      },
      "what a splat weighs: its expected value alone, with which the image's mean is b, or "

@@ -62,11 +62,7 @@ std::uint32_t fit_to_device(const RenderOptions& o, const ClContext& cl, const D
                         format_bytes(plan.total()).c_str(), allowed.c_str());
         return 0;
     }
-    ChainShape shape;
-    shape.proposals = o.mlt.proposals;
-    shape.film_atomics64 = o.mlt.film_atomics64;
-    shape.omc_part = o.mlt.split != Split::None;
-    shape.target_cells = o.mlt.target == Target::TwoStage ? kTargetMaxCells : 1;
+    ChainShape shape = mlt_chain_shape(o.mlt);
     if (o.threads) {
         shape.threads = *o.threads;
         check_chain_shape(shape);

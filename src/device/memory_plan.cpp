@@ -119,8 +119,8 @@ FilmBands film_bands(std::uint64_t pixels, std::uint64_t bytes_per_pixel, std::u
     return b;
 }
 
-std::uint64_t mlt_film_pixel_bytes(bool atomics64) {
-    return 3 * (atomics64 ? sizeof(std::uint64_t) : sizeof(std::uint32_t));
+std::uint64_t mlt_film_pixel_bytes(bool atomics64, std::uint32_t layers) {
+    return 3 * std::uint64_t(layers) * (atomics64 ? sizeof(std::uint64_t) : sizeof(std::uint32_t));
 }
 
 std::uint64_t omc_scratch_pixels(std::uint64_t pixels) {
@@ -144,7 +144,8 @@ MemoryPlan plan_mlt(const DeviceScene& ds, const ChainShape& shape, std::size_t 
     std::uint64_t words = ds.layout.chain_words(shape.float32_states);
     add(p, Buffer::State, words * chains * 4);
     add(p, Buffer::Values, chains * sizeof(ChainValue));
-    add_film(p, pixels(ds), mlt_film_pixel_bytes(shape.film_atomics64), max_alloc);
+    add_film(p, pixels(ds), mlt_film_pixel_bytes(shape.film_atomics64, shape.film_layers),
+             max_alloc);
     add(p, Buffer::Stats, group_rows(threads) * MLT_STAT_COUNT * sizeof(std::uint64_t));
     // Each chain's start, (round, index) (cl/mlt/burnin.cl).
     add(p, Buffer::Picks, chains * 2 * sizeof(std::uint32_t));
@@ -248,7 +249,10 @@ MemoryPlan plan_for(const DeviceScene& ds, ChainShape shape, std::uint32_t threa
                      format_bytes(smallest.largest()) + "); the device allows " +
                      format_bytes(std::uint64_t(kMemoryFraction * double(budget.global_bytes))) +
                      " (max allocation " + format_bytes(budget.max_alloc_bytes) +
-                     "); it would take " + format_bytes(needed) + " of device memory");
+                     "); it would take " + format_bytes(needed) + " of device memory" +
+                     (shape.film_layers > 1 ? " (--weights expected halves its film of " +
+                                                  format_bytes(smallest.film()) + ")"
+                                            : std::string()));
 }
 
 } // namespace

@@ -66,6 +66,7 @@ struct ChainShape {
     bool film_atomics64 = false;    // the 64-bit reference film (MltOptions)
     bool omc_part = false;          // a split: the OMC part's film and counters too
     std::uint32_t target_cells = 1; // weights of the chains' target (src/render/target.hpp)
+    std::uint32_t film_layers = 1;  // 2 with Kelemen's weights: the large steps' own
     std::uint32_t chains() const { return threads / proposals; }
 };
 
@@ -91,7 +92,9 @@ constexpr std::uint64_t kPtFilmPixelBytes = 3 * sizeof(float);
 // Pixels of the OMC part's scratch band (a split; src/render/path_tracer.hpp):
 // at most 16,384 (192 KiB), a multiple of the work-group.
 std::uint64_t omc_scratch_pixels(std::uint64_t pixels);
-std::uint64_t mlt_film_pixel_bytes(bool atomics64);
+// Bytes per pixel of the MLT film: three words per layer, 4 B each (8 B in
+// the 64-bit reference film).
+std::uint64_t mlt_film_pixel_bytes(bool atomics64, std::uint32_t layers);
 
 // Every buffer of a render whose film's bands fit max_alloc bytes each.
 MemoryPlan plan_pt(const DeviceScene& ds, std::uint64_t max_alloc = kNoAllocLimit);

@@ -29,15 +29,8 @@ std::string program_defines(const ClContext& cl, const DeviceScene& ds, const Ml
     return d + split_defines(opt.split);
 }
 
-ChainShape chain_shape(const MltOptions& opt, const MltTestHooks& hooks) {
-    ChainShape s{opt.threads, opt.proposals, hooks.float32_states, opt.film_atomics64,
-                 opt.split != Split::None};
-    s.target_cells = opt.target == Target::TwoStage ? kTargetMaxCells : 1;
-    return s;
-}
-
 const MltOptions& check_options(const MltOptions& opt, const MltTestHooks& hooks) {
-    check_chain_shape(chain_shape(opt, hooks));
+    check_chain_shape(mlt_chain_shape(opt, hooks));
     if (opt.stuck_run == 0) throw UsageError("--stuck-run: must be at least 1");
     return opt;
 }
@@ -75,8 +68,8 @@ std::vector<std::string> mlt_program_files(const MltTestHooks& hooks) {
 MltRenderer::MltRenderer(const ClContext& cl, const DeviceScene& ds, const MltOptions& opt,
                          const MltTestHooks& hooks)
     : cl_(cl), ds_(require_device(cl, ds, opt)), opt_(check_options(opt, hooks)), hooks_(hooks),
-      plan_(
-          plan_mlt(ds, chain_shape(opt, hooks), scan_work_group(cl.device()), max_alloc(cl, opt))),
+      plan_(plan_mlt(ds, mlt_chain_shape(opt, hooks), scan_work_group(cl.device()),
+                     max_alloc(cl, opt))),
       program_(cl.build(mlt_program_files(hooks), program_defines(cl, ds, opt, hooks))),
       k_init_(program_.p, "mlt_init"), k_step_(program_.p, "mlt_step"),
       k_owed_(program_.p, "mlt_owed"), scene_(cl, ds),
@@ -91,7 +84,7 @@ MltRenderer::MltRenderer(const ClContext& cl, const DeviceScene& ds, const MltOp
       burn_in_(cl, program_.p, opt, pixels()),
       film_(cl, pixels(),
             plan_mlt_film(pixels(), opt.threads, max_alloc(cl, opt), opt.film_atomics64,
-                          opt.film_pass_mutations, opt.kelemen ? 2.0 : 1.0)) {
+                          opt.film_pass_mutations, mlt_chain_shape(opt).film_layers)) {
     split_ = opt.split;
     if (opt.split != Split::None)
         omc_ = make_omc_part(split_ == Split::Auto ? kChainsSplit : split_);
@@ -120,9 +113,11 @@ double MltRenderer::b_rel_error() const {
 void MltRenderer::prepare(RankGroup& ranks) {
     Clock::time_point t0 = Clock::now();
     sample_starts(ranks);
-    if (opt_.kelemen)
-        kelemen_pb_ =
-            float(std::clamp(double(large_step_of(opt_)), 0.0, 1.0) * burn_in_.sums().b().b);
+    if (kelemen_in_force(opt_)) {
+        const double p = std::clamp(double(large_step_of(opt_)), 0.0, 1.0);
+        kelemen_pb_ = float(p * burn_in_.ranks_b(ranks) * hooks_.b0_scale);
+        kelemen_b0_ = double(kelemen_pb_) / p; // as the weights have it
+    }
     if (split_ == Split::Auto) {
         bool pay = ranks.all(chains_pay(mlt_relative_variance()));
         split_ = pay ? kChainsSplit : Split::All;
@@ -272,16 +267,20 @@ std::uint64_t MltRenderer::units_for_spp(std::uint32_t spp, int rank, int ranks)
 }
 
 MltTally MltRenderer::mlt_tally() const {
-    MltTally t;
+    const std::uint32_t layers = film_.plan().shape.layers;
+    MltTally t = MltTally::shaped(pixels(), layers, omc_ != nullptr);
     // The film with the stay weights the chains have gathered and not yet
     // splatted, which are then taken out again.
     owed(kOwedAdd);
-    t.film = film_.read();
+    std::vector<std::uint64_t> words = film_.read(); // pixel, layer, channel
     owed(kOwedUndo);
     cl_.finish("kernel mlt_owed over " + std::to_string(chains()) + " chains");
     const int shift = FILM64_FRAC_BITS - int(film_.plan().shape.frac_bits);
-    for (std::uint64_t& w : t.film)
-        w <<= shift;
+    for (std::size_t i = 0; i < t.film.size(); ++i) {
+        const std::size_t at = (i / 3 * layers) * 3 + i % 3;
+        t.film[i] = words[at + 3 * FILM_LAYER_CHAINS] << shift;
+        if (layers > 1) t.large_film[i] = words[at + 3 * FILM_LAYER_LARGE] << shift;
+    }
     MltStats s = stats();
     t.mutations = s.mutations;
     t.burn_in_lum = burn_in_.sums().lum_fixed;
@@ -316,15 +315,19 @@ Image MltRenderer::part_image(Part part) const {
 }
 
 Image MltRenderer::image_of(const Tally& summed, bool mlt, bool omc) const {
-    MltTally t = MltTally::shaped(pixels(), omc_ != nullptr);
+    MltTally t = MltTally::shaped(pixels(), film_.plan().shape.layers, omc_ != nullptr);
     t.read(summed);
     Image img(int(ds_.frame.width), int(ds_.frame.height));
     const std::size_t n = 3 * pixels();
     if (mlt && t.mutations > 0) {
         double b = mlt_b(t.burn_in_lum + t.large_lum, t.burn_in_samples + t.large);
-        double scale = b * double(pixels()) / double(t.mutations) / double(1u << FILM64_FRAC_BITS);
-        for (std::size_t i = 0; i < n; ++i)
-            img.rgb[i] = float(double(t.film[i]) * scale);
+        double unit = double(pixels()) / double(t.mutations) / double(1u << FILM64_FRAC_BITS);
+        const bool large = !t.large_film.empty();
+        for (std::size_t i = 0; i < n; ++i) {
+            double v = double(t.film[i]) * b;
+            if (large) v += double(t.large_film[i]) * kelemen_b0_;
+            img.rgb[i] = float(v * unit);
+        }
     }
     if (omc && omc_) {
         // Per-pixel samples and the burn-in's that landed in the pixel.

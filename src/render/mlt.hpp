@@ -88,8 +88,13 @@ class MltRenderer : public Integrator {
     // What the render has rendered (src/render/mlt_tally.hpp), as a Tally.
     Tally tally() const override;
     MltTally mlt_tally() const;
-    // b * splats * pixels / mutations, b from the summed samples, plus the
-    // OMC part of a split: per pixel, the sum of its per-pixel samples and
+    // (b * chains' splats + b0 * large steps' splats) * pixels / mutations,
+    // b from the summed samples and b0 that of Kelemen's weights (the
+    // balance heuristic's two estimates, src/render/mlt_options.hpp: the
+    // chains' is normalized by b, the large steps' by the b0 their weights
+    // took; with b in place of b0 the image would tend to
+    // F (I + p b) / (I + p b0), off where I is small), plus the OMC part of a
+    // split: per pixel, the sum of its per-pixel samples and
     // of the burn-in's that landed in it, over spp + their count. Given the
     // count, those are uniform in the pixel, so this is unbiased (dividing by
     // the expected count M / P instead adds the count's noise: for the light
@@ -137,7 +142,10 @@ class MltRenderer : public Integrator {
     std::uint32_t steps_run_ = 0;      // steps of the chains (none with Split::All)
     // The OMC part's path tracer for `split`.
     std::unique_ptr<OmcSchedule> make_omc_part(Split split) const;
-    float kelemen_pb_ = 0; // p b0 of Kelemen's weights, b0 from the burn-in; 0 without
+    // Kelemen's weights: p b0, b0 from every rank's burn-in, and b0 itself,
+    // which scales the large steps' layer of the film; 0 without.
+    float kelemen_pb_ = 0;
+    double kelemen_b0_ = 0;
     // What the split's rule weighs, from the burn-in and the first step.
     SplitCosts split_costs() const;
     Image image_of(const Tally& summed, bool mlt, bool omc) const;

@@ -21,6 +21,12 @@ BEstimate BurnInSums::b(std::uint64_t large_lum, std::uint64_t large) const {
     return e;
 }
 
+double MltBurnIn::ranks_b(RankGroup& ranks) const {
+    std::vector<double> sums{double(sums_.lum_fixed), double(sums_.samples)};
+    ranks.sum_all(sums);
+    return sums[1] > 0 ? sums[0] / double(1u << MLT_B_FRAC_BITS) / sums[1] : 0;
+}
+
 MltBurnIn::MltBurnIn(const ClContext& cl, cl_program program, const MltOptions& opt,
                      std::uint64_t pixels)
     : cl_(cl), program_(program), opt_(opt), k_lum_(program, "mlt_luminance") {

@@ -56,6 +56,9 @@ class MltBurnIn {
              TargetBuffer& target, const BurnInFilm& film, const Chains& chains);
 
     const BurnInSums& sums() const { return sums_; }
+    // b of every rank's burn-in samples (a collective; the same on every
+    // rank): b0, the normalization Kelemen's weights take.
+    double ranks_b(RankGroup& ranks) const;
     // The paths' parts per pixel; empty unless a split or the two-stage
     // target needs them.
     const BurnInParts& parts() const { return parts_; }

@@ -15,20 +15,19 @@ constexpr double kFloatSlack = 1.0 + 1.0 / 1024;
 
 } // namespace
 
-double film_pass_bound(std::uint32_t threads, std::uint32_t steps, std::uint32_t frac_bits,
-                       double weight) {
+double film_pass_bound(std::uint32_t threads, std::uint32_t steps, std::uint32_t frac_bits) {
     double mutations = double(threads) * double(steps);
-    return mutations * (weight * std::ldexp(1.0, int(frac_bits)) / kBlueShare * kFloatSlack + 3.0);
+    return mutations * (std::ldexp(1.0, int(frac_bits)) / kBlueShare * kFloatSlack + 3.0);
 }
 
 MltFilmPlan plan_mlt_film(std::uint64_t pixels, std::uint32_t threads, std::uint64_t max_alloc,
-                          bool atomics64, std::uint64_t pass_mutations, double weight) {
+                          bool atomics64, std::uint64_t pass_mutations, std::uint32_t layers) {
     MltFilmPlan p;
     p.atomics64 = atomics64;
-    std::uint64_t word = atomics64 ? 8 : 4;
-    FilmBands split = film_bands(pixels, 3 * word, max_alloc);
+    const std::uint64_t pixel_bytes = mlt_film_pixel_bytes(atomics64, layers);
+    FilmBands split = film_bands(pixels, pixel_bytes, max_alloc);
     if (atomics64 && split.bands > 1)
-        throw InputError("the 64-bit reference film needs " + format_bytes(pixels * 3 * word) +
+        throw InputError("the 64-bit reference film needs " + format_bytes(pixels * pixel_bytes) +
                          " in one buffer; the device allows " + format_bytes(max_alloc));
     if (split.bands > FILM_MAX_BANDS)
         throw InputError("the film needs " + std::to_string(split.bands) + " bands of at most " +
@@ -36,6 +35,7 @@ MltFilmPlan plan_mlt_film(std::uint64_t pixels, std::uint32_t threads, std::uint
                          "binds at most " + std::to_string(FILM_MAX_BANDS) +
                          ": use a smaller film");
     p.shape.bands = split.bands;
+    p.shape.layers = layers;
     p.shape.band_pixels = std::uint32_t(split.band_pixels);
     if (atomics64) {
         p.shape.frac_bits = FILM64_FRAC_BITS;
@@ -44,7 +44,7 @@ MltFilmPlan plan_mlt_film(std::uint64_t pixels, std::uint32_t threads, std::uint
         std::uint32_t t = std::max(threads, 1u);
         p.steps_per_drain = std::uint32_t(std::max<std::uint64_t>(1, pass_mutations / t));
         std::uint32_t f = kFilmMaxFracBits;
-        while (f > 0 && film_pass_bound(t, p.steps_per_drain, f, weight) > kWordLimit)
+        while (f > 0 && film_pass_bound(t, p.steps_per_drain, f) > kWordLimit)
             --f;
         if (f == 0)
             throw InputError("--threads " + std::to_string(threads) +
@@ -56,12 +56,12 @@ MltFilmPlan plan_mlt_film(std::uint64_t pixels, std::uint32_t threads, std::uint
 }
 
 MltFilm::MltFilm(const ClContext& cl, std::uint64_t pixels, const MltFilmPlan& plan)
-    : cl_(cl), plan_(plan), host_(3 * pixels, 0) {
-    std::uint64_t word = plan.atomics64 ? 8 : 4;
+    : cl_(cl), plan_(plan), host_(3 * plan.shape.layers * pixels, 0) {
+    const std::uint64_t pixel_bytes = mlt_film_pixel_bytes(plan.atomics64, plan.shape.layers);
     for (std::uint32_t b = 0; b < plan.shape.bands; ++b) {
         std::uint64_t first = std::uint64_t(b) * plan.shape.band_pixels;
         std::uint64_t n = std::min<std::uint64_t>(plan.shape.band_pixels, pixels - first);
-        bands_.emplace_back(cl, CL_MEM_READ_WRITE, 3 * n * word);
+        bands_.emplace_back(cl, CL_MEM_READ_WRITE, n * pixel_bytes);
         bands_.back().fill_zero(cl);
     }
 }
@@ -85,7 +85,8 @@ std::uint64_t add_words(const ClContext& cl, const ClBuffer& band, std::uint64_t
 } // namespace
 
 std::uint64_t MltFilm::add_band(std::uint32_t b, std::vector<std::uint64_t>& sums) const {
-    std::uint64_t* at = sums.data() + std::size_t(b) * 3 * plan_.shape.band_pixels;
+    std::uint64_t* at =
+        sums.data() + std::size_t(b) * 3 * plan_.shape.layers * plan_.shape.band_pixels;
     return plan_.atomics64 ? add_words<cl_ulong>(cl_, bands_[b], at)
                            : add_words<cl_uint>(cl_, bands_[b], at);
 }

@@ -15,8 +15,10 @@
 // Hence, even if every splat of the pass lands on one pixel, a word holds at
 // most T S (2^F / 0.0722 (1 + 2^-10) + 3) (the 2^-10 covers float rounding
 // and the 2^-24 rounding of gathered stays), which plan_film keeps below
-// 2^32. With Kelemen's weights (cl/mlt/mlt_step.cl) a large proposal adds up to
-// 1 more, so a step adds at most 2K: the first term doubles.
+// 2^32. With Kelemen's weights (cl/mlt/mlt_step.cl) the film has a second
+// layer of words, the large steps' own estimates: a large proposal splats
+// weight at most 1 there, at most K per chain and step, so the same bound
+// holds for each layer's words.
 #pragma once
 #include "device/memory_plan.hpp"
 #include "device/ocl.hpp"
@@ -38,18 +40,17 @@ struct MltFilmPlan {
 };
 
 // The bound above: the largest value a word can reach in a pass of `steps`
-// steps of `threads` threads with `frac_bits` fraction bits, when a
-// mutation adds at most `weight` (1; 2 with Kelemen's weights).
-double film_pass_bound(std::uint32_t threads, std::uint32_t steps, std::uint32_t frac_bits,
-                       double weight = 1);
+// steps of `threads` threads with `frac_bits` fraction bits.
+double film_pass_bound(std::uint32_t threads, std::uint32_t steps, std::uint32_t frac_bits);
 
 // S = max(1, pass_mutations / T) steps per drain and the most fraction
 // bits F <= kFilmMaxFracBits whose bound stays below 2^32, or, with
-// atomics64, one 64-bit band of FILM64_FRAC_BITS drained never. Throws
-// InputError if the bands exceed FILM_MAX_BANDS or not even F = 1 fits.
+// atomics64, one 64-bit band of FILM64_FRAC_BITS drained never; `layers`
+// (1, or 2 with Kelemen's weights) per pixel. Throws InputError if the
+// bands exceed FILM_MAX_BANDS or not even F = 1 fits.
 MltFilmPlan plan_mlt_film(std::uint64_t pixels, std::uint32_t threads, std::uint64_t max_alloc,
                           bool atomics64, std::uint64_t pass_mutations = kFilmPassMutations,
-                          double weight = 1);
+                          std::uint32_t layers = 1);
 
 class MltFilm {
   public:
@@ -60,8 +61,8 @@ class MltFilm {
     const ClBuffer& band(std::uint32_t i) const { return bands_[i < bands_.size() ? i : 0]; }
     // Adds the device's words to the host's sums and zeroes them.
     void drain();
-    // Host sums plus the device's words now, per pixel and channel, in units
-    // of 2^-frac_bits.
+    // Host sums plus the device's words now, per pixel, layer and channel,
+    // in units of 2^-frac_bits.
     std::vector<std::uint64_t> read() const;
     // The largest word any drain has seen (a test's view of the bound).
     std::uint64_t peak_word() const { return peak_; }

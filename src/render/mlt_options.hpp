@@ -1,6 +1,7 @@
 // An MLT render's options and the tests' hooks, with the defaults that
 // the command line shares (src/app/options.cpp).
 #pragma once
+#include "device/memory_plan.hpp"
 #include "render/mlt_film.hpp"
 #include "render/split.hpp"
 #include "render/target.hpp"
@@ -26,6 +27,9 @@ constexpr float kDefaultLargeStepNoBurnIn = 0.5f; // the paper's baseline withou
 struct MltTestHooks {
     bool float32_states = false; // unpacked float32 states
     bool eager_stay = false;     // splat x's stay weight at every step
+    // Kelemen's weights from this multiple of b0: a deliberately wrong b0,
+    // which must leave the image unbiased.
+    double b0_scale = 1;
     // The file that defines eval_state: cl/path/eval_path.cl renders the
     // scene; the sampler tests use test/cl/eval_target.cl, a known target
     // (2D, or with bounces on a layout that has bounce slots).
@@ -85,6 +89,25 @@ constexpr float default_large_step(bool burn_in, bool kelemen) {
 // The large step's probability of a render of `opt`.
 inline float large_step_of(const MltOptions& opt) {
     return opt.large_step.value_or(default_large_step(opt.burn_in, opt.kelemen));
+}
+
+// Kelemen's weights in force: asked for, with large steps to weigh.
+inline bool kelemen_in_force(const MltOptions& opt) {
+    return opt.kelemen && large_step_of(opt) > 0;
+}
+
+// What the memory plan needs to know of a render of `opt` (one definition
+// for the renderer, `render --threads auto` and `budget`).
+inline ChainShape mlt_chain_shape(const MltOptions& opt, const MltTestHooks& hooks = {}) {
+    ChainShape s;
+    s.threads = opt.threads;
+    s.proposals = opt.proposals;
+    s.float32_states = hooks.float32_states;
+    s.film_atomics64 = opt.film_atomics64;
+    s.omc_part = opt.split != Split::None;
+    s.target_cells = opt.target == Target::TwoStage ? kTargetMaxCells : 1;
+    s.film_layers = kelemen_in_force(opt) ? 2 : 1;
+    return s;
 }
 
 } // namespace smallmlt

@@ -4,9 +4,10 @@
 
 namespace smallmlt {
 
-MltTally MltTally::shaped(std::uint64_t pixels, bool split) {
+MltTally MltTally::shaped(std::uint64_t pixels, std::uint32_t layers, bool split) {
     MltTally t;
     t.film.assign(3 * pixels, 0);
+    if (layers > 1) t.large_film.assign(3 * pixels, 0);
     if (split) {
         t.omc_sums.assign(3 * pixels, 0);
         t.burn_in_landed.assign(pixels, 0);

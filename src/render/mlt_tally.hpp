@@ -9,9 +9,10 @@
 namespace smallmlt {
 
 struct MltTally {
-    // Per pixel and channel, the film with what the chains owe, in units of
-    // 2^-FILM64_FRAC_BITS.
-    std::vector<std::uint64_t> film;
+    // Per pixel and channel, the film's chains' layer with what the chains
+    // owe, and its large steps' layer (Kelemen's weights; else empty), in
+    // units of 2^-FILM64_FRAC_BITS.
+    std::vector<std::uint64_t> film, large_film;
     std::uint64_t mutations = 0;
     // b's samples, MLT_B_FRAC_BITS fixed point: the burn-in's luminance sum
     // and count, the large steps' sum and count; the burn-in's sum of
@@ -27,8 +28,9 @@ struct MltTally {
     std::vector<std::uint64_t> burn_in_landed;
     std::vector<double> burn_in_omc;
 
-    // An empty tally of a film of `pixels`, with or without a split's parts.
-    static MltTally shaped(std::uint64_t pixels, bool split);
+    // An empty tally of a film of `pixels` in `layers` layers, with or
+    // without a split's parts.
+    static MltTally shaped(std::uint64_t pixels, std::uint32_t layers, bool split);
     Tally to_tally() const;
     // Reads a tally of this one's shape; throws std::logic_error if its
     // size is not this shape's.
@@ -38,6 +40,7 @@ struct MltTally {
     // v(double&) for a number, v(vector&) for a list.
     template <typename T, typename V> static void visit(T& t, V&& v) {
         v(t.film);
+        v(t.large_film);
         v(t.mutations);
         v(t.burn_in_lum);
         v(t.burn_in_samples);
