@@ -174,11 +174,9 @@ def water_height(x, z):
     return 0.9 + 0.025 * math.sin(7.0 * x + 2.0 * z) + 0.02 * math.sin(5.0 * z - 3.0 * x + 1.0)
 
 
-def cornell_water():
-    m = Mesh()
-    cornell_walls(m)
-    m.quad("light", (0, 1.999, 0), (0, 0, 0.18), (0.18, 0, 0), (0, -1, 0))
-    # Water: a closed mesh (front faces outward) inset slightly from the walls.
+def water(m):
+    """Water filling the box to about 0.9: a closed mesh (front faces
+    outward) inset slightly from the walls, its surface in waves."""
     n, lo, hi, bottom = 32, -0.999, 0.999, 0.001
     xs = [lo + (hi - lo) * i / n for i in range(n + 1)]
     top = [[(x, water_height(x, z), z) for x in xs] for z in xs]
@@ -198,11 +196,37 @@ def cornell_water():
             pb, qb = (p[0], bottom, p[2]), (q[0], bottom, q[2])
             m.tri("water", pb, qb, q, facing=out)
             m.tri("water", pb, q, p, facing=out)
-    mats = CORNELL_MATERIALS + ("newmtl light\nKd 0.78 0.78 0.78\nKe 50 50 50\n"
-                                "newmtl water\nillum 7\nNi 1.33\n")
+
+
+def water_box(light, half_x, half_z):
+    """The box with water, under a light on the ceiling of half-extents
+    half_x by half_z: the mesh and the materials, `light` being the light's
+    MTL statements."""
+    m = Mesh()
+    cornell_walls(m)
+    m.quad("light", (0, 1.999, 0), (0, 0, half_z), (half_x, 0, 0), (0, -1, 0))
+    water(m)
+    return m, CORNELL_MATERIALS + "newmtl light\n" + light + "newmtl water\nillum 7\nNi 1.33\n"
+
+
+def cornell_water():
+    m, mats = water_box("Kd 0.78 0.78 0.78\nKe 50 50 50\n", 0.18, 0.18)
     write_scene("cornell-water", m, mats, (512, 512), CAMERA_FRONT, 24,
                 "cornell-water: the box half-filled with water (index 1.33) under a small "
                 "light; caustics on the floor")
+
+
+def water_spark():
+    # After Tungsten's example scene water-caustic (a light of 1 cm x 0.8 cm
+    # and radiance about 5e5 over water): here the radiance is 1e5, so that
+    # the light has about the power of cornell-water's and the box is
+    # exposed alike. The camera sees the light directly, in a pixel or two
+    # of the 160 x 90 film, 10^5 times display white; all else is lit by it,
+    # under the water through the waves.
+    m, mats = water_box("Kd 0 0 0\nKe 100000 100000 100000\n", 0.005, 0.004)
+    write_scene("water-spark", m, mats, (160, 90), CAMERA_FRONT, 7,
+                "water-spark: the box half-filled with water under a 1 cm light of radiance "
+                "1e5 that the camera sees directly")
 
 
 def cornell_glass():
@@ -265,6 +289,7 @@ def ajar():
 if __name__ == "__main__":
     cornell()
     cornell_water()
+    water_spark()
     cornell_glass()
     tiny_caustic()
     furnace()

@@ -202,3 +202,80 @@ TEST(Split, OmcChunksGrowWithTheSamples) {
     for (std::uint32_t spp = 16; spp < 5000; ++spp)
         EXPECT_LE(omc_chunk(spp, p), spp / 16) << spp;
 }
+
+namespace {
+
+// t_o / t_m of the rule's n_o: the OMC part's rays per step over the chains'.
+double omc_time_ratio(const SplitCosts& c, double effort) {
+    return omc_samples_per_step(c, effort) * c.pixels * c.omc_rays / (c.threads * c.mutation_rays);
+}
+
+} // namespace
+
+// The rule gives t_o / t_m = sqrt(A / C) (split.hpp), times --omc-effort,
+// but at most kOmcMaxTimeRatio times the chains' time before the effort.
+// The costs are those the burn-in measured at 128x128: cornell-water's
+// (V_o from its 36 cm light seen directly) lie below the cap, water-spark's
+// (its 1 cm light, V_o 3.1e8) far above it.
+TEST(Split, RuleGivesTheOmcPartAtMostTheChainsTime) {
+    SplitCosts water;
+    water.omc_variance = 19848.8;
+    water.b = 0.225809;
+    water.pixels = 128 * 128;
+    water.omc_rays = 1;
+    water.mutation_rays = 12.3588;
+    water.threads = 65536;
+    const double a = water.omc_variance * water.pixels * water.omc_rays;
+    const double cm =
+        kChainCorrelation * water.b * water.b * water.pixels * water.pixels * water.mutation_rays;
+    EXPECT_NEAR(omc_time_ratio(water, 1), std::sqrt(a / cm), 1e-12);
+    EXPECT_NEAR(omc_time_ratio(water, 1), 0.490, 0.001);
+    EXPECT_NEAR(omc_time_ratio(water, 2), 2 * std::sqrt(a / cm), 1e-12);
+
+    SplitCosts spark = water;
+    spark.omc_variance = 3.125e8;
+    spark.b = 0.236839;
+    spark.mutation_rays = 8.35022;
+    std::printf("water-spark: the rule's sqrt(A / C) %.1f, capped at %.1f\n",
+                std::sqrt(spark.omc_variance * spark.pixels /
+                          (kChainCorrelation * spark.b * spark.b * spark.pixels * spark.pixels *
+                           spark.mutation_rays)),
+                kOmcMaxTimeRatio);
+    EXPECT_DOUBLE_EQ(omc_time_ratio(spark, 1), kOmcMaxTimeRatio);
+    EXPECT_DOUBLE_EQ(omc_time_ratio(spark, 0.5), 0.5 * kOmcMaxTimeRatio);
+}
+
+// The chains beside the OMC part on water-spark (a 1 cm light of radiance
+// 1e5 seen directly, scenes/generate.py), with the defaults but for the
+// threads and with the split that --split auto picks where the chains pay
+// (whether they do depends on whether the burn-in found the rare paths
+// through the water to the light: at 16,384 threads seeds 1 and 2 did, 3 did
+// not): the chains run, and each step's OMC part traces no more rays than
+// they do (the cap above), so that no step outlasts --time by more than the
+// chains' own step. Before the cap, the rule gave the OMC part 169 times the
+// chains' time at this film, and the first step alone ran past a 60-s
+// --time.
+TEST(Split, ChainsRunBesideABrightLightSeenDirectly) {
+    DeviceScene ds = prepare_scene(test::scene("water-spark", 160, 90));
+    MltOptions opt;      // the command line's defaults
+    opt.threads = 16384; // 36 burn-in samples a pixel: enough to see the light's variance
+    opt.split = kChainsSplit;
+    MltRenderer mlt(test::cl(), ds, opt);
+    mlt.prepare();
+    mlt.step(4);
+    MltStats s = mlt.stats();
+    const OmcPartTracer& part = *MltInspect::omc_part(mlt);
+    double omc_rays_per_step = mlt.omc_rate() * double(part.rays()) / double(part.spp());
+    double chain_rays_per_step = double(s.rays) / 4;
+    std::printf("split %s, %llu mutations; OMC part %.1f spp per step, %.4g rays a step "
+                "against the chains' %.4g\n",
+                split_name(mlt.split()), static_cast<unsigned long long>(s.mutations),
+                mlt.omc_rate(), omc_rays_per_step, chain_rays_per_step);
+    EXPECT_EQ(mlt.split(), kChainsSplit);
+    EXPECT_EQ(s.mutations, 4u * opt.threads);
+    EXPECT_GT(mlt.part_image(MltRenderer::Part::Mlt).mean_luminance(), 0.0);
+    // The cap binds: the rule's rate is the chains' rays per step as the
+    // first step measured them.
+    EXPECT_GT(omc_rays_per_step, 0.5 * chain_rays_per_step);
+    EXPECT_LE(omc_rays_per_step, 1.05 * chain_rays_per_step);
+}

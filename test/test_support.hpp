@@ -27,6 +27,10 @@ struct MltInspect {
     static const ClBuffer& picks(const MltRenderer& m) { return m.picks_; } // (round, index)
     static std::vector<float> weights(const MltRenderer& m) { return m.target_.read(); }
     static cl_program program(const MltRenderer& m) { return m.program_.p; }
+    // The split's OMC part (null without a split).
+    static const OmcPartTracer* omc_part(const MltRenderer& m) {
+        return m.omc_ ? &m.omc_->part() : nullptr;
+    }
 };
 
 } // namespace smallmlt

@@ -54,7 +54,7 @@ double omc_samples_per_step(const SplitCosts& c, double effort) {
     if (!(c.b > 0) || !(c.mutation_rays > 0)) return effort > 0 ? 1.0 : 0.0;
     double a = c.omc_variance * c.pixels * c.omc_rays;
     double cm = kChainCorrelation * c.b * c.b * c.pixels * c.pixels * c.mutation_rays;
-    double ratio = std::sqrt(a / cm) * effort; // t_o / t_m
+    double ratio = std::min(std::sqrt(a / cm), kOmcMaxTimeRatio) * effort; // t_o / t_m
     return ratio * c.threads * c.mutation_rays / (c.pixels * c.omc_rays);
 }
 

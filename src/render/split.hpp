@@ -46,6 +46,13 @@ std::string split_defines(Split s);
 //       of one mutation.
 // The OMC part then takes n_o = (t_o / t_m) T c_m / (P c_o) samples per
 // pixel per step of T threads. tau is measured (doc/RESULTS.md, "Split").
+// t_o / t_m is at most kOmcMaxTimeRatio: where the rule gives the OMC part
+// more, its squared error is that of a few pixels of emission far above
+// display white (a small light seen directly), which the rule would render
+// at the expense of everything else: water-spark's 1 cm light asks for 71
+// times the chains' time at 128x128 and 169 at its 160x90, and the chains
+// ran one step in the whole render. The bench's scenes ask 0.17
+// (tiny-caustic) to 0.49 (cornell-water), below the cap.
 struct SplitCosts {
     double omc_variance = 0;  // V_o
     double b = 0;             // the MLT part's mean luminance
@@ -55,6 +62,7 @@ struct SplitCosts {
     double threads = 0;       // T
 };
 constexpr double kChainCorrelation = 8.0; // tau
+constexpr double kOmcMaxTimeRatio = 1.0;  // the OMC part takes at most the chains' time
 
 // Whether the chains should render the MLT part at all (Split::Auto). Per-
 // pixel samples render it with a squared error, summed over pixels, of V_m
