@@ -33,7 +33,7 @@ for scene in $SCENES; do
         i=$((i + 1))
     done
     pt=$(sed -n 's/.*, \([0-9.]*\) M paths\/s.*/\1/p' "$TMP/pt" | median)
-    mlt=$(sed -n 's/.*, \([0-9.]*\) M mutations\/s.*/\1/p' "$TMP/mlt" | median)
+    mlt=$(sed -n 's/.*, \([0-9.e+-]*\) M mutations\/s.*/\1/p' "$TMP/mlt" | median)
     bytes=$(sed -n 's/.*state \([0-9]*\) B\/chain.*/\1/p' "$TMP/mlt" | head -n 1)
     printf '%-16s %12s %16s %8s %14s\n' "$scene" "$pt" "$mlt" "$(echo "$mlt $pt" | awk '{printf "%.2f", $1 / $2}')" "${bytes:-?}"
 done

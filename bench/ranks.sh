@@ -37,7 +37,7 @@ for run in $(seq 1 "$RUNS"); do
         out=$(job "$np" "$pt" --spp "$SPP" --seed "$run" --out "$OUT/last.pfm")
         t1=$(date +%s.%N)
         echo "$config,$run,wall_s,$(awk -v a="$t0" -v b="$t1" 'BEGIN { print b - a }')" >> "$OUT/runs.csv"
-        m=$(printf '%s\n' "$out" | sed -n 's/.* \([0-9.]*\) M mutations\/s.*/\1/p' |
+        m=$(printf '%s\n' "$out" | sed -n 's/.* \([0-9.e+-]*\) M mutations\/s.*/\1/p' |
             awk '{s += $1} END {print s * 1e6}')
         echo "$config,$run,mutations_per_s,$m" >> "$OUT/runs.csv"
         for t in $TIMES; do

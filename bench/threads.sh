@@ -27,7 +27,7 @@ while [ "$n" -le "$max" ]; do
             --threads "$n" --out "$OUT/r.png" >> "$OUT/log"
         i=$((i + 1))
     done
-    rate=$(sed -n 's/.*, \([0-9.]*\) M mutations\/s.*/\1/p' "$OUT/log" | median)
+    rate=$(sed -n 's/.*, \([0-9.e+-]*\) M mutations\/s.*/\1/p' "$OUT/log" | median)
     echo "$n,$rate" | tee -a "$OUT/threads.csv"
     n=$((n * 2))
 done

@@ -55,8 +55,8 @@ std::string mlt_summary(const MltReport& r) {
     double per_mutation = s.mutations ? 100.0 / double(s.mutations) : 0.0;
     char buf[480];
     std::snprintf(buf, sizeof buf,
-                  "%u chains x %u proposals x %u steps (state %u B/chain), %.3f M mutations/s, "
-                  "%.3f M rays/s (steps only; b and chain start %.2f s), acceptance %.1f%%, "
+                  "%u chains x %u proposals x %u steps (state %u B/chain), %.4g M mutations/s, "
+                  "%.4g M rays/s (steps only; b and chain start %.2f s), acceptance %.1f%%, "
                   "large steps %.1f%%, %.2f global atomics/mutation, b = %.5g (+-%.2f%%), "
                   "%llu non-finite dropped, "
                   "longest run of rejections %llu, %llu chains stuck (%u in a row)",
