@@ -1,8 +1,8 @@
-// The MLT sampler against a known target with bounces (test/cl/eval_target.cl on
-// a layout with two 24-bit and two 16-bit slots a bounce, depth 4): the
-// chains' states follow the target's closed-form marginals, live and dead
-// bounces included, and the splatted image follows its per-pixel integral.
+// The MLT sampler against a known target with bounces (test/known_target.hpp):
+// the chains' states follow the target's closed-form marginals, live and dead
+// bounces included. The splatted image: test_chain_target_splat.cpp.
 // doc/testing.md ("The chains against a known target") gives the derivations.
+#include "known_target.hpp"
 #include "render/mlt.hpp"
 #include "scene/sample_layout.hpp"
 #include "stats.hpp"
@@ -19,144 +19,9 @@
 #include <vector>
 
 using namespace smallmlt;
+using namespace smallmlt::known_target;
 
 namespace {
-
-const char* kProbeFile = "test/cl/probe_mlt.cl";
-
-// Diffuse and dielectric, no light, depth 4: each bounce has BSDF_U, BSDF_V
-// (24 bits), FRESNEL and RR (16 bits), 80 bits; slots straddle words.
-constexpr int kDepth = 4;
-SceneFeatures target_features() {
-    SceneFeatures f;
-    f.diffuse = true;
-    f.dielectric = true;
-    f.depth = kDepth;
-    return f;
-}
-
-// ---------------------------------------------------------------------------
-// Exact sums over a slot's grid {i / n : i = 0 .. n - 1}.
-
-// sum_{i = i0}^{i1 - 1} (alpha + beta i / n): exact in double for n <= 2^24.
-double lin_sum(double i0, double i1, double n, double alpha, double beta) {
-    if (i1 <= i0) return 0.0;
-    double count = i1 - i0;
-    return count * alpha + beta * (i0 + i1 - 1.0) * count / (2.0 * n);
-}
-
-// sum_{j = j0}^{j1 - 1} sin^2(2 pi j / n) = count / 2 - (1/2) sum cos(w j),
-// w = 4 pi / n, with the Dirichlet sum
-// sum_{j0}^{j1-1} cos(w j) = sin(count w / 2) / sin(w / 2) cos(w (j0 + j1 - 1) / 2).
-double sin2_sum(double j0, double j1, double n) {
-    double count = j1 - j0, w = 4.0 * M_PI / n;
-    double cos_sum = std::sin(count * w / 2) / std::sin(w / 2) * std::cos(w * (j0 + j1 - 1) / 2);
-    return count / 2 - cos_sum / 2;
-}
-
-// The target of test/cl/eval_target.cl on the layout of target_features(), and
-// its marginals under pi(u) = F(u) / sum F on the grid (film numbers on the
-// 2^-24 grid, each bounce slot on its own). All weights are "per unit
-// volume": sums over grid points divided by the number of grid points.
-// doc/testing.md derives each of them.
-struct KnownTarget {
-    static constexpr double kN24 = 16777216.0, kN16 = 65536.0;
-    static constexpr double kQ[2] = {0.5, 0.75}; // continuation phase threshold, left / right
-
-    SampleLayout layout;
-    double H = 0;                      // mean of h(a)
-    double E = 0;                      // mean over a bounce's numbers of all factors but p(c)
-    double p_lt[2] = {}, p_ge[2] = {}; // mean of p(c) 1[phase < q] and p(c) 1[phase >= q]
-    double V[kDepth][2] = {};          // weight of bounces k.. given bounce k is live
-    double W[kDepth + 1][2] = {};      // weight of "exactly l live bounces", l = 1..D
-    double G[2] = {};                  // weight of the film's left / right half
-    double Z = 0;                      // sum over the grid of F / grid size = b
-
-    explicit KnownTarget(const SampleLayout& l) : layout(l) {
-        H = h_stripes(0, 64);
-        E = H;
-        for (int s = 0; s < kSlotCount; ++s) {
-            if (!l.has(Slot(s)) || s == kBsdfU || s == kFresnel) continue;
-            double n = std::ldexp(1.0, l.bits[s]);
-            E *= lin_sum(0, n, n, 0.75, 0.5) / n; // 3/4 + v/2
-        }
-        for (int side = 0; side < 2; ++side) {
-            for (int ph = 0; ph < 4; ++ph)
-                (below(ph, side) ? p_lt : p_ge)[side] += p_phase(0, 32, ph);
-            V[kDepth - 1][side] = E * (p_lt[side] + p_ge[side]);
-            for (int k = kDepth - 2; k >= 0; --k)
-                V[k][side] = E * (p_ge[side] + p_lt[side] * V[k + 1][side]);
-            for (int len = 1; len <= kDepth; ++len)
-                W[len][side] = std::pow(E, len) * std::pow(p_lt[side], len - 1) *
-                               (len < kDepth ? p_ge[side] : p_lt[side] + p_ge[side]);
-        }
-        for (int bx = 0; bx < 8; ++bx)
-            G[bx >= 4] += film_column(bx, 8);
-        Z = G[0] * V[0][0] + G[1] * V[0][1];
-    }
-
-    // Stripe factor s(v, n) on stripe m: 5/4 odd, 3/4 even.
-    static double s_factor(int m) { return m % 2 ? 1.25 : 0.75; }
-    // sum of (1 + 3x) s(x, 64) over the x grid points of stripes m0 .. m1 - 1
-    // (of 64), / N24; parity -1: all stripes, 0 / 1: even / odd ones only.
-    static double gx_stripes(int m0, int m1, int parity = -1) {
-        double sum = 0, w = kN24 / 64;
-        for (int m = m0; m < std::min(m1, 60); ++m) // 0 from 15/16 = stripe 60 on
-            if (parity < 0 || m % 2 == parity)
-                sum += s_factor(m) * lin_sum(m * w, (m + 1) * w, kN24, 1.0, 3.0);
-        return sum / kN24;
-    }
-    // Weight of film cell: x bin bx of bins_x (x stripes of one parity, or
-    // all), y bin by of bins_y; both counts multiples of 4 and at most 64,
-    // so no cell straddles x, y = 1/4 or a stripe.
-    static double film(int bx, int bins_x, int by, int bins_y, int parity = -1) {
-        if ((bx + 1) * 4 <= bins_x && (by + 1) * 4 <= bins_y) return 0.0; // g = 0 there
-        int per = 64 / bins_x;
-        double w = kN24 / bins_y;
-        double gy = (w + sin2_sum(by * w, (by + 1) * w, kN24)) / kN24;
-        return gx_stripes(bx * per, (bx + 1) * per, parity) * gy;
-    }
-    static double film_column(int bx, int bins_x) {
-        double sum = 0;
-        for (int by = 0; by < 4; ++by)
-            sum += film(bx, bins_x, by, 4);
-        return sum;
-    }
-    static int side_of_column(int bx, int bins) { return 2 * bx >= bins; }
-    // h summed over stripes m0 .. m1 - 1 (of 64) of the 24-bit grid, / N24;
-    // parity -1: all of them, 0 or 1: the even or the odd ones only.
-    static double h_stripes(int m0, int m1, int parity = -1) {
-        double sum = 0, w = kN24 / 64;
-        for (int m = std::max(m0, 8); m < m1; ++m) // h = 0 below 1/8 = stripe 8
-            if (parity < 0 || m % 2 == parity)
-                sum += (m % 2 ? 1.5 : 0.5) * lin_sum(m * w, (m + 1) * w, kN24, 0.5, 1.0);
-        return sum / kN24;
-    }
-    // Quarter `quarter` of c's phase stripes (of 32) is the stripe
-    // 4 t + quarter of 128: below q or not.
-    static bool below(int quarter, int side) { return (quarter + 1) / 4.0 <= kQ[side]; }
-    // p(c) = (3/4 + c/2) s(c, 128) summed over quarter `quarter` (0..3) of
-    // c's phase stripes t0 .. t1 - 1 (of 32), / N16.
-    static double p_phase(int t0, int t1, int quarter) {
-        double sum = 0, w = kN16 / 128;
-        for (int t = t0; t < t1; ++t) {
-            int n = 4 * t + quarter;
-            if (n < 120) // 0 from 15/16 = stripe 120 on
-                sum += s_factor(n) * lin_sum(n * w, (n + 1) * w, kN16, 0.75, 0.5);
-        }
-        return sum / kN16;
-    }
-    // Weight of "c_0 in quarter `quarter` of phase stripes t0 .. t1 - 1" on
-    // one side: its p times the bounce's other factors times what follows.
-    double c0_weight(int t0, int t1, int quarter, int side) const {
-        return p_phase(t0, t1, quarter) * E * (below(quarter, side) ? V[1][side] : 1.0);
-    }
-    // Pixel value of the image (bins x bins pixels): pixels * integral of F
-    // over the pixel.
-    double pixel(int bx, int by, int bins) const {
-        return double(bins) * bins * film(bx, bins, by, bins) * V[0][side_of_column(bx, bins)];
-    }
-};
 
 // ---------------------------------------------------------------------------
 // Hotelling's T^2 over chains. Chain c contributes the vector n_c of its
@@ -243,14 +108,6 @@ Verdict hotelling(const CellStat& st, std::uint32_t chains, std::uint32_t snapsh
     double f_limit = test::f_critical(alpha, q, n - q);
     v.limit = f_limit * q * (n - 1) / (n - q);
     return v;
-}
-
-// For calibration runs: CT_SEED=n replaces the fixed base seed (11), and
-// CT_DIAG=1 prints lag correlations and the summary (chain test) or every t
-// (splat test).
-double env_or(const char* name, double fallback) {
-    const char* v = std::getenv(name);
-    return v ? std::atof(v) : fallback;
 }
 
 } // namespace
@@ -545,109 +402,3 @@ INSTANTIATE_TEST_SUITE_P(Proposals, ChainTarget,
                                            ChainCase{4, 2048, 150, 10, 50},
                                            ChainCase{8, 1024, 150, 10, 60},
                                            ChainCase{16, 1024, 150, 10, 50}));
-
-// ---------------------------------------------------------------------------
-// The splatted image, b * splats * pixels / mutations, against the target's
-// per-pixel integral, pixels * sum_{pixel} g / N24^2 * V_0(side), on a 4 x 4
-// film. R independent renders (own seeds: own b, burn-in and steps) give R
-// values of each quantity below; with their mean m and standard deviation s,
-// t = (m - truth) / (s / sqrt R) is t-distributed with R - 1 degrees of
-// freedom for an unbiased render (each value is a sum of many splats: close
-// to normal). Quantities: the 15 lit pixels of image(); the image mean (a
-// bias shared by all pixels: the splat weights); and the 15 lit pixels of
-// image() / b, against truth / b_true (where the chains went, without b's own
-// noise, which is common to all pixels of one render and dominates them).
-// 31 two-sided tests at 1e-3 / 31 each (Bonferroni: 1e-3 for the test). The
-// pixel where the target is zero must get exactly nothing.
-struct SplatCase {
-    std::uint32_t proposals, threads, steps, replicas;
-};
-
-class ChainTargetSplat : public ::testing::TestWithParam<SplatCase> {};
-
-TEST_P(ChainTargetSplat, ImageMatchesThePerPixelIntegral) {
-    const SplatCase sc = GetParam();
-    const int bins = 4, pixels = bins * bins, values = 2 * pixels + 1;
-    const DeviceScene ds = test::layout_only_scene(target_features(), bins, bins);
-    const KnownTarget tg(ds.layout);
-    const std::uint32_t replicas = sc.replicas;
-    // Value i < pixels: pixel i of image(); i = pixels: the image mean;
-    // pixels + 1 + j: pixel j of image() / b.
-    std::vector<double> sum(values, 0.0), sum2(values, 0.0), truth(values, 0.0);
-    for (int i = 0; i < pixels; ++i) {
-        truth[i] = tg.pixel(i % bins, i / bins, bins);
-        truth[pixels] += truth[i] / pixels;
-        truth[pixels + 1 + i] = truth[i] / tg.Z;
-    }
-    EXPECT_NEAR(truth[pixels], tg.Z, 1e-12 * tg.Z);
-    auto t0 = std::chrono::steady_clock::now();
-    double acceptance = 0, b_error = 0;
-    for (std::uint32_t r = 0; r < replicas; ++r) {
-        MltOptions opt = test::plain_mlt();
-        MltTestHooks hooks;
-        opt.proposals = sc.proposals;
-        opt.threads = sc.threads;
-        opt.large_step = 0.05f;
-        opt.seed = std::uint64_t(env_or("CT_SEED", 11)) * 7919 + 100 * sc.proposals + r;
-        opt.burn_in_iters = 32;
-        hooks.evaluator = "test/cl/eval_target.cl";
-        MltRenderer mlt(test::cl(), ds, opt, hooks);
-        mlt.prepare();
-        mlt.step(sc.steps);
-        MltStats ms = mlt.stats();
-        acceptance += double(ms.accepted) / double(ms.mutations) / replicas;
-        b_error += mlt.b_rel_error() / replicas;
-        Image img = mlt.image();
-        std::vector<double> v(values, 0.0);
-        for (int i = 0; i < pixels; ++i) {
-            v[i] = img.rgb[3 * i];
-            v[pixels] += v[i] / pixels;
-            v[pixels + 1 + i] = v[i] / mlt.b();
-        }
-        for (int i = 0; i < values; ++i) {
-            sum[i] += v[i];
-            sum2[i] += v[i] * v[i];
-        }
-    }
-    double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    const int tests = 2 * (pixels - 1) + 1;
-    const double alpha = 1e-3 / tests, nu = replicas - 1.0;
-    const double t_limit = test::student_two_sided_critical(alpha, nu);
-    std::printf(
-        "K %u: %u replicas, %.1f s, acceptance %.1f%%, b +-%.2f%% a render; |t| limit %.2f\n",
-        sc.proposals, replicas, seconds, 100 * acceptance, 100 * b_error, t_limit);
-    const bool diag = env_or("CT_DIAG", 0) > 0;
-    double worst[3] = {0, 0, 0};
-    int worst_at[3] = {-1, -1, -1};
-    for (int i = 0; i < values; ++i) {
-        const int group = i < pixels ? 0 : i == pixels ? 1 : 2;
-        const std::string what = group == 0   ? "pixel " + std::to_string(i)
-                                 : group == 1 ? std::string("image mean")
-                                              : "pixel / b " + std::to_string(i - pixels - 1);
-        double mean = sum[i] / replicas;
-        if (truth[i] == 0) {
-            EXPECT_EQ(sum[i], 0.0) << what << ": splats where the target is zero";
-            continue;
-        }
-        double var = (sum2[i] - replicas * mean * mean) / (replicas - 1);
-        double se = std::sqrt(std::max(var, 0.0) / replicas);
-        ASSERT_GT(se, 0.0) << what;
-        double t = (mean - truth[i]) / se;
-        if (std::fabs(t) > std::fabs(worst[group])) {
-            worst[group] = t;
-            worst_at[group] = group == 2 ? i - pixels - 1 : i;
-        }
-        if (diag) std::printf("  t %s %.3f\n", what.c_str(), t);
-        if (group == 1)
-            std::printf("  image mean %.5f, truth %.5f (%+.2f%%, se %.2f%%), t %.2f\n", mean,
-                        truth[i], 100 * (mean / truth[i] - 1), 100 * se / truth[i], t);
-        EXPECT_LT(std::fabs(t), t_limit)
-            << what << ": mean " << mean << ", truth " << truth[i] << ", t " << t;
-    }
-    std::printf("  worst t: pixels %.2f (at %d), pixels / b %.2f (at %d)\n", worst[0], worst_at[0],
-                worst[2], worst_at[2]);
-}
-
-INSTANTIATE_TEST_SUITE_P(Proposals, ChainTargetSplat,
-                         ::testing::Values(SplatCase{1, 2048, 150, 16},
-                                           SplatCase{4, 2048, 150, 16}));
