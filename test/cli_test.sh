@@ -10,6 +10,9 @@ rm -rf "$DIR" && mkdir -p "$DIR"
 
 check help 0 "smallmlt render SCENE" -- "$BIN" --help
 check render_help 0 "--spp N" -- "$BIN" render --help
+check budget_help 0 "--format table|csv|json" -- "$BIN" budget --help
+check compare_help 0 "smallmlt compare IMAGE REFERENCE" -- "$BIN" compare --help
+check devices_help 0 "smallmlt devices" -- "$BIN" devices -h
 check version 0 "smallmlt " -- "$BIN" --version
 check devices 0 "global memory" -- "$BIN" devices
 mkdir -p "$DIR/no-vendors"

@@ -85,7 +85,8 @@ Command parse_command_line(int argc, const char* const* argv) {
     Command c;
     if (r.done()) throw UsageError("no command given (see smallmlt --help)");
     std::string cmd = r.next();
-    for (int i = r.i; i < argc && (cmd == "render" || cmd == "budget"); ++i)
+    const bool command = cmd == "render" || cmd == "budget" || cmd == "compare" || cmd == "devices";
+    for (int i = r.i; i < argc && command; ++i)
         if (std::string(argv[i]) == "--help" || std::string(argv[i]) == "-h") return c;
     if (cmd == "--help" || cmd == "-h" || cmd == "help") {
         c.kind = CommandKind::Help;
