@@ -251,14 +251,18 @@ TEST(Split, RuleGivesTheOmcPartAtMostTheChainsTime) {
 // (whether they do depends on whether the burn-in found the rare paths
 // through the water to the light: at 16,384 threads seeds 1 and 2 did, 3 did
 // not): the chains run, and each step's OMC part traces no more rays than
-// they do (the cap above), so that no step outlasts --time by more than the
-// chains' own step. Before the cap, the rule gave the OMC part 169 times the
-// chains' time at this film, and the first step alone ran past a 60-s
-// --time.
+// they do, so that no step outlasts --time by more than the chains' own
+// step. Before the cap, the rule gave the OMC part 169 times the chains'
+// time here, and the first step alone ran past a 60-s --time. The light
+// covers 3% of a pixel, so the burn-in's 2^19 paths hit it about once: at
+// this seed they do, and the cap binds (the OMC part's rays equal the
+// chains'); a seed that misses it gives the OMC part nothing, and the check
+// still holds. Split.RuleGivesTheOmcPartAtMostTheChainsTime checks the cap
+// itself.
 TEST(Split, ChainsRunBesideABrightLightSeenDirectly) {
     DeviceScene ds = prepare_scene(test::scene("water-spark", 160, 90));
-    MltOptions opt;      // the command line's defaults
-    opt.threads = 16384; // 36 burn-in samples a pixel: enough to see the light's variance
+    MltOptions opt; // the command line's defaults
+    opt.threads = 16384;
     opt.split = kChainsSplit;
     MltRenderer mlt(test::cl(), ds, opt);
     mlt.prepare();
@@ -274,8 +278,5 @@ TEST(Split, ChainsRunBesideABrightLightSeenDirectly) {
     EXPECT_EQ(mlt.split(), kChainsSplit);
     EXPECT_EQ(s.mutations, 4u * opt.threads);
     EXPECT_GT(mlt.part_image(MltRenderer::Part::Mlt).mean_luminance(), 0.0);
-    // The cap binds: the rule's rate is the chains' rays per step as the
-    // first step measured them.
-    EXPECT_GT(omc_rays_per_step, 0.5 * chain_rays_per_step);
     EXPECT_LE(omc_rays_per_step, 1.05 * chain_rays_per_step);
 }
