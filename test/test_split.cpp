@@ -213,7 +213,8 @@ double omc_time_ratio(const SplitCosts& c, double effort) {
 } // namespace
 
 // The rule gives t_o / t_m = sqrt(A / C) (split.hpp), times --omc-effort,
-// but at most kOmcMaxTimeRatio times the chains' time before the effort.
+// but at most kOmcMaxTimeRatio and at least kOmcMinTimeRatio times the
+// chains' time before the effort.
 // The costs are those the burn-in measured at 128x128: cornell-water's
 // (V_o from its 36 cm light seen directly) lie below the cap, water-spark's
 // (its 1 cm light, V_o 3.1e8) far above it.
@@ -243,6 +244,12 @@ TEST(Split, RuleGivesTheOmcPartAtMostTheChainsTime) {
                 kOmcMaxTimeRatio);
     EXPECT_DOUBLE_EQ(omc_time_ratio(spark, 1), kOmcMaxTimeRatio);
     EXPECT_DOUBLE_EQ(omc_time_ratio(spark, 0.5), 0.5 * kOmcMaxTimeRatio);
+
+    // A burn-in that missed the light saw no variance: the floor.
+    SplitCosts missed = spark;
+    missed.omc_variance = 0;
+    EXPECT_DOUBLE_EQ(omc_time_ratio(missed, 1), kOmcMinTimeRatio);
+    EXPECT_DOUBLE_EQ(omc_time_ratio(missed, 0), 0.0) << "--omc-effort 0";
 }
 
 // The chains beside the OMC part on water-spark (a 1 cm light of radiance
@@ -256,8 +263,8 @@ TEST(Split, RuleGivesTheOmcPartAtMostTheChainsTime) {
 // time here, and the first step alone ran past a 60-s --time. The light
 // covers 3% of a pixel, so the burn-in's 2^19 paths hit it about once: at
 // this seed they do, and the cap binds (the OMC part's rays equal the
-// chains'); a seed that misses it gives the OMC part nothing, and the check
-// still holds. Split.RuleGivesTheOmcPartAtMostTheChainsTime checks the cap
+// chains'); a seed that misses it gives the OMC part the floor, a 16th,
+// and the check still holds. Split.RuleGivesTheOmcPartAtMostTheChainsTime checks the cap
 // itself.
 TEST(Split, ChainsRunBesideABrightLightSeenDirectly) {
     DeviceScene ds = prepare_scene(test::scene("water-spark", 160, 90));

@@ -50,11 +50,11 @@ std::string split_defines(Split s) {
 }
 
 double omc_samples_per_step(const SplitCosts& c, double effort) {
-    if (!(c.omc_variance > 0) || !(c.omc_rays > 0) || !(c.pixels > 0)) return 0;
+    if (!(c.omc_rays > 0) || !(c.pixels > 0)) return 0;
     if (!(c.b > 0) || !(c.mutation_rays > 0)) return effort > 0 ? 1.0 : 0.0;
-    double a = c.omc_variance * c.pixels * c.omc_rays;
+    double a = std::max(c.omc_variance, 0.0) * c.pixels * c.omc_rays;
     double cm = kChainCorrelation * c.b * c.b * c.pixels * c.pixels * c.mutation_rays;
-    double ratio = std::min(std::sqrt(a / cm), kOmcMaxTimeRatio) * effort; // t_o / t_m
+    double ratio = std::clamp(std::sqrt(a / cm), kOmcMinTimeRatio, kOmcMaxTimeRatio) * effort;
     return ratio * c.threads * c.mutation_rays / (c.pixels * c.omc_rays);
 }
 

@@ -52,7 +52,10 @@ std::string split_defines(Split s);
 // at the expense of everything else: water-spark's 1 cm light asks for 71
 // times the chains' time at 128x128 and 169 at its 160x90, and the chains
 // ran one step in the whole render. The bench's scenes ask 0.17
-// (tiny-caustic) to 0.49 (cornell-water), below the cap.
+// (tiny-caustic) to 0.49 (cornell-water), below the cap. And t_o / t_m is
+// at least kOmcMinTimeRatio: V_o is 0 where the burn-in's paths missed what
+// the OMC part renders (water-spark's light covers 3% of a pixel, and 2^19
+// paths hit it about once), and the OMC part must still converge.
 struct SplitCosts {
     double omc_variance = 0;  // V_o
     double b = 0;             // the MLT part's mean luminance
@@ -61,8 +64,9 @@ struct SplitCosts {
     double mutation_rays = 0; // c_m
     double threads = 0;       // T
 };
-constexpr double kChainCorrelation = 8.0; // tau
-constexpr double kOmcMaxTimeRatio = 1.0;  // the OMC part takes at most the chains' time
+constexpr double kChainCorrelation = 8.0;     // tau
+constexpr double kOmcMaxTimeRatio = 1.0;      // the OMC part takes at most the chains' time
+constexpr double kOmcMinTimeRatio = 1.0 / 16; // and at least a 16th of it
 
 // Whether the chains should render the MLT part at all (Split::Auto). Per-
 // pixel samples render it with a squared error, summed over pixels, of V_m
