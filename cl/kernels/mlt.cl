@@ -68,7 +68,8 @@ __kernel void mlt_init(SCENE_ARGS, __global const float* weight, const TargetCel
  * MLT; K = 1 is plain PSSMLT). Work-item t is proposal t % K of chain t / K;
  * a chain's K work-items sit in one work-group (K divides MLT_GROUP):
  * 1. each evaluates its proposal y_i and splats a_i F(y_i)/I(y_i) (with
- *    Kelemen's weights, mlt_step.cl, (a_i + 1 if large) F(y_i)/(I(y_i) + p b0));
+ *    Kelemen's weights, mlt_step.cl, a_i F(y_i)/(I(y_i) + p b0), and a large
+ *    proposal's own F(y_i)/(I(y_i) + p b0) in the film's large-steps layer);
  * 2. they meet in local memory; the first picks the next state among
  *    (x, y_1..y_K) in proportion to (K - sum a_i, a_1, .., a_K), adds the
  *    stay weight K - sum a_i to x's gathered weight, splats that at x's
