@@ -44,11 +44,11 @@ flags() {
 METHODS=${METHODS:-pt mlt-nosplit mlt-direct mlt mlt-k2 mlt-k4}
 
 echo "device: $("$BIN" devices | sed -n '1p'), cores: $(nproc)" | tee "$OUT/machine.txt"
-echo "scene,method,mse_ratio,rel_mse_ratio,mse_unlit_ratio,block8_mse_ratio,pt_seconds,target_mse" > "$OUT/time_to_error.csv"
+echo "scene,method,mse_ratio,rel_mse_ratio,mse_unlit_ratio,block8_mse_ratio,block32_mse_ratio,pt_seconds,target_mse" > "$OUT/time_to_error.csv"
 for scene in $SCENES; do
     ref=$(sh bench/reference.sh "$BIN" "$scene" "$SIZE")
     csv="$OUT/$scene.csv"
-    [ -n "${PLOT_ONLY:-}" ] || echo "method,seed,seconds,samples_per_pixel,samples,mse,rel_mse,mse_unlit,block8_mse" > "$csv"
+    [ -n "${PLOT_ONLY:-}" ] || echo "method,seed,seconds,samples_per_pixel,samples,mse,rel_mse,mse_unlit,block8_mse,block32_mse" > "$csv"
     run_seeds=$SEEDS
     [ -z "${PLOT_ONLY:-}" ] || run_seeds=""
     for seed in $run_seeds; do

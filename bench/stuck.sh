@@ -24,7 +24,7 @@ OUT=${RESULTS:-bench/results}/stuck
 mkdir -p "$OUT"
 ref=$(sh bench/reference.sh "$BIN" "$SCENE" "$SIZE")
 csv="$OUT/error.csv"
-echo "method,seed,seconds,samples_per_pixel,samples,mse,rel_mse,mse_unlit,block8_mse" > "$csv"
+echo "method,seed,seconds,samples_per_pixel,samples,mse,rel_mse,mse_unlit,block8_mse,block32_mse" > "$csv"
 echo "large_step,seed,chains,steps,stuck_chains,longest_run" > "$OUT/stuck.csv"
 common="scenes/$SCENE.scene --width $SIZE --height $SIZE --reference $ref --reference-mask ${ref%.pfm}-mask.pfm"
 mlt_work="--time $SECONDS_"

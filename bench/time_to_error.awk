@@ -1,6 +1,6 @@
-# Time each method needs to reach PT's error, by each of four metrics, from a
+# Time each method needs to reach PT's error, by each of five metrics, from a
 # convergence-log CSV "method,seed,seconds,samples_per_pixel,samples,mse,
-# rel_mse,mse_unlit,block8_mse" (rows of one render in time order; render
+# rel_mse,mse_unlit,block8_mse,block32_mse" (rows of one render in time order; render
 # --log's columns after method and seed). For each metric the target is the
 # largest of PT's final values over the seeds: the error every PT render
 # reached by its end. A render reaches it at its first row at or below it,
@@ -8,12 +8,12 @@
 # extrapolated from its last row as error ~ 1/t (the Monte Carlo rate) and
 # marked "*". Prints one row per method,
 # "scene,method,mse_ratio,rel_mse_ratio,mse_unlit_ratio,block8_mse_ratio,
-# pt_seconds,target_mse": each metric's median time over the seeds as a
+# block32_mse_ratio,pt_seconds,target_mse": each metric's median time over the seeds as a
 # ratio of PT's median, then PT's median time and the target by MSE. A
 # metric that some row leaves empty (mse_unlit without --reference-mask)
 # has an empty ratio.
 # Usage: awk -F, -v scene=NAME -f median.awk -f time_to_error.awk CSV
-BEGIN { nmetrics = split("6 7 8 9", column, " ") }
+BEGIN { nmetrics = split("6 7 8 9 10", column, " ") }
 NR == 1 { next }
 {
     key = $1 SUBSEP $2

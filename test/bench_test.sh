@@ -14,26 +14,28 @@ rm -rf "$DIR" && mkdir -p "$DIR"
 # for mse_unlit; PT reaches them at 2 s and 4 s, median 3 s. x by mse: 1 s,
 # and log-log between (1 s, 0.8) and (4 s, 0.05): 2 s, so 1.5 / 3; rel_mse:
 # seed 1 never, 2 s x 0.4 / 0.2 = 4 s (*), seed 2 1 s, so 2.5 / 3; mse_unlit:
-# 1 s twice; block8_mse: 1 s, and 4 s x 0.8 / 0.2 = 16 s (*), so 8.5 / 3.
+# 1 s twice; block8_mse: 1 s, and 4 s x 0.8 / 0.2 = 16 s (*), so 8.5 / 3;
+# block32_mse (PT's as its block8_mse): 1 s, and 4 s x 0.4 / 0.2 = 8 s (*),
+# so 4.5 / 3.
 cat > "$DIR/hand.csv" << 'EOF'
-method,seed,seconds,samples_per_pixel,samples,mse,rel_mse,mse_unlit,block8_mse
-pt,1,1,1,1,0.4,0.4,0.04,0.4
-pt,1,2,2,2,0.2,0.2,0.02,0.2
-pt,1,4,4,4,0.1,0.1,0.01,0.1
-pt,2,1,1,1,0.8,0.8,0.08,0.8
-pt,2,2,2,2,0.4,0.4,0.04,0.4
-pt,2,4,4,4,0.2,0.2,0.02,0.2
-x,1,1,1,1,0.1,0.4,0.01,0.2
-x,1,2,2,2,0.1,0.4,0.01,0.2
-x,2,1,1,1,0.8,0.1,0.01,0.8
-x,2,4,4,4,0.05,0.1,0.01,0.8
+method,seed,seconds,samples_per_pixel,samples,mse,rel_mse,mse_unlit,block8_mse,block32_mse
+pt,1,1,1,1,0.4,0.4,0.04,0.4,0.4
+pt,1,2,2,2,0.2,0.2,0.02,0.2,0.2
+pt,1,4,4,4,0.1,0.1,0.01,0.1,0.1
+pt,2,1,1,1,0.8,0.8,0.08,0.8,0.8
+pt,2,2,2,2,0.4,0.4,0.04,0.4,0.4
+pt,2,4,4,4,0.2,0.2,0.02,0.2,0.2
+x,1,1,1,1,0.1,0.4,0.01,0.2,0.1
+x,1,2,2,2,0.1,0.4,0.01,0.2,0.1
+x,2,1,1,1,0.8,0.1,0.01,0.8,0.8
+x,2,4,4,4,0.05,0.1,0.01,0.8,0.4
 EOF
 # time_to_error CSV: its rows for scene h, on one line
 time_to_error() { awk -F, -v scene=h -f bench/median.awk -f bench/time_to_error.awk "$1" | tr '\n' ' '; }
-check time_to_error_by_hand 0 "h,pt,1.000,1.000,1.000,1.000,3.00,0.2 h,x,0.500,0.833*,0.333,2.833*,3.00,0.2 " -- time_to_error "$DIR/hand.csv"
+check time_to_error_by_hand 0 "h,pt,1.000,1.000,1.000,1.000,1.000,3.00,0.2 h,x,0.500,0.833*,0.333,2.833*,1.500*,3.00,0.2 " -- time_to_error "$DIR/hand.csv"
 # Without a mask, mse_unlit is an empty field, and so is its ratio.
 awk -F, -v OFS=, 'NR > 1 { $8 = "" } 1' "$DIR/hand.csv" > "$DIR/nomask.csv"
-check time_to_error_without_mask 0 "h,pt,1.000,1.000,,1.000,3.00,0.2 h,x,0.500,0.833*,,2.833*,3.00,0.2 " -- time_to_error "$DIR/nomask.csv"
+check time_to_error_without_mask 0 "h,pt,1.000,1.000,,1.000,1.000,3.00,0.2 h,x,0.500,0.833*,,2.833*,1.500*,3.00,0.2 " -- time_to_error "$DIR/nomask.csv"
 
 QUICK=1 RESULTS="$DIR/results" CACHE="$DIR/cache" sh bench/all.sh "$BIN" > "$DIR/all.log" 2>&1
 rc=$?
@@ -46,10 +48,10 @@ rows() { [ "$(tail -n +2 "$1" | wc -l)" -eq "$2" ]; }
 png() { [ "$(head -c 4 "$1" | tail -c 3)" = PNG ]; }
 
 truth time_to_error_rows rows "$R/error_time/time_to_error.csv" 12
-truth time_to_error_header [ "$(head -n 1 "$R/error_time/time_to_error.csv")" = "scene,method,mse_ratio,rel_mse_ratio,mse_unlit_ratio,block8_mse_ratio,pt_seconds,target_mse" ]
-truth time_to_error_pt_is_1 awk -F, 'NR > 1 && $2 == "pt" && $3 $4 $5 $6 != "1.0001.0001.0001.000" {exit 1}' "$R/error_time/time_to_error.csv"
-truth time_to_error_numbers awk -F, 'NR > 1 && !($3 + 0 > 0 && $4 + 0 > 0 && $5 + 0 > 0 && $6 + 0 > 0 && $7 + 0 > 0 && $8 + 0 > 0) {exit 1}' "$R/error_time/time_to_error.csv"
-truth stuck_time_to_error_numbers awk -F, '!($3 + 0 > 0 && $4 + 0 > 0 && $5 + 0 > 0 && $6 + 0 > 0) {exit 1}' "$R/stuck/time_to_error.csv"
+truth time_to_error_header [ "$(head -n 1 "$R/error_time/time_to_error.csv")" = "scene,method,mse_ratio,rel_mse_ratio,mse_unlit_ratio,block8_mse_ratio,block32_mse_ratio,pt_seconds,target_mse" ]
+truth time_to_error_pt_is_1 awk -F, 'NR > 1 && $2 == "pt" && $3 $4 $5 $6 $7 != "1.0001.0001.0001.0001.000" {exit 1}' "$R/error_time/time_to_error.csv"
+truth time_to_error_numbers awk -F, 'NR > 1 && !($3 + 0 > 0 && $4 + 0 > 0 && $5 + 0 > 0 && $6 + 0 > 0 && $7 + 0 > 0 && $8 + 0 > 0 && $9 + 0 > 0) {exit 1}' "$R/error_time/time_to_error.csv"
+truth stuck_time_to_error_numbers awk -F, '!($3 + 0 > 0 && $4 + 0 > 0 && $5 + 0 > 0 && $6 + 0 > 0 && $7 + 0 > 0) {exit 1}' "$R/stuck/time_to_error.csv"
 # masks: every cached reference has its mask beside it
 masks() { for f in "$DIR"/cache/*s.pfm; do [ -s "${f%.pfm}-mask.pfm" ] || return 1; done; }
 truth reference_masks masks

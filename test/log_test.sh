@@ -19,7 +19,7 @@ film="--width 32 --height 32"
 # agreement to 1e-5 relative); mse_unlit only with MASK, else an empty field.
 same_error() {
     { head -n 1 "$1"; tail -n 1 "$1"; "$BIN" compare "$2" "$DIR/ref.pfm" ${3:+--mask "$3"}; } |
-        awk -v want="${3:+4}" 'NR == 1 { n = split($0, name, ",") }
+        awk -v want="${3:+5}" 'NR == 1 { n = split($0, name, ",") }
         NR == 2 { split($0, row, ",") }
         NR == 3 { for (i = 1; i < NF; i += 2) got[$i] = $(i + 1) }
         END {
@@ -30,7 +30,7 @@ same_error() {
                 bad = bad || !(d * d <= 1e-10 * got[k] * got[k] && got[k] > 0)
                 ++same
             }
-            exit bad || same != (want ? want : 3)
+            exit bad || same != (want ? want : 4)
         }'
 }
 
@@ -45,13 +45,13 @@ for m in pt mlt; do
     check "log_$m" 0 "error against $DIR/ref.pfm: mse" -- "$BIN" render scenes/cornell.scene $film \
         --method "$m" --threads 256 --spp 24 --reference "$DIR/ref.pfm" --reference-mask "$DIR/mask.pfm" \
         --log "$DIR/$m.csv" --log-every 0.01 --out "$DIR/$m.pfm"
-    truth "log_${m}_header" grep -qx "seconds,samples_per_pixel,samples,mse,rel_mse,mse_unlit,block8_mse" "$DIR/$m.csv"
+    truth "log_${m}_header" grep -qx "seconds,samples_per_pixel,samples,mse,rel_mse,mse_unlit,block8_mse,block32_mse" "$DIR/$m.csv"
     truth "log_${m}_last_row_is_final_image" same_error "$DIR/$m.csv" "$DIR/$m.pfm" "$DIR/mask.pfm"
     truth "log_${m}_rows_ordered" ordered "$DIR/$m.csv"
 done
 # The mask leaves out the light, the noisiest pixels, and keeps the rest.
 truth log_mask_leaves_out_the_light awk -F, 'END { exit !($6 > 0 && $6 < $4 / 2) }' "$DIR/pt.csv"
-check log_no_mask 0 "block8_mse" -- "$BIN" render scenes/cornell.scene $film --method pt --spp 8 \
+check log_no_mask 0 "block32_mse" -- "$BIN" render scenes/cornell.scene $film --method pt --spp 8 \
     --reference "$DIR/ref.pfm" --log "$DIR/nomask.csv" --log-every 0.01 --out "$DIR/nomask.pfm"
 truth log_no_mask_empty_field same_error "$DIR/nomask.csv" "$DIR/nomask.pfm"
 check log_without_reference 2 "--log $DIR/x.csv: give --reference" -- "$BIN" render scenes/cornell.scene --log "$DIR/x.csv"

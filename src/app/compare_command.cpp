@@ -19,9 +19,11 @@ int run_compare(const std::string& image, const std::string& reference, const st
                       image_mse_excluding(img, ref, read_image(mask), mask));
         unlit = v;
     }
-    std::printf("mse %.6g rel_mse %.6g mean %.6g reference_mean %.6g block8_mse %.6g%s\n",
+    std::printf("mse %.6g rel_mse %.6g mean %.6g reference_mean %.6g block8_mse %.6g "
+                "block32_mse %.6g%s\n",
                 image_mse(img, ref), image_rel_mse(img, ref), img.mean_luminance(),
-                ref.mean_luminance(), image_block_mse(img, ref, kErrorBlock), unlit.c_str());
+                ref.mean_luminance(), image_block_mse(img, ref, kErrorBlock),
+                image_block_mse(img, ref, kErrorBlockWide), unlit.c_str());
     return 0;
 }
 

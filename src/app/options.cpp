@@ -114,8 +114,8 @@ const std::vector<Flag> kRenderFlags = {
     {"--log", "FILE.csv", Section::Render,
      [](RenderOptions& o, const FlagValue& v) { o.log = v.text; },
      "with --reference: a row every --log-every seconds of render time with seconds, samples "
-     "(or mutations) per pixel, samples, mse, rel_mse, mse_unlit, block8_mse; measuring is "
-     "not render time"},
+     "(or mutations) per pixel, samples, mse, rel_mse, mse_unlit, block8_mse, block32_mse; "
+     "measuring is not render time"},
     {"--log-every", "SECONDS", Section::Render,
      [](RenderOptions& o, const FlagValue& v) {
          o.log_interval_s = v.positive("number of seconds");

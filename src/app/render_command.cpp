@@ -189,8 +189,8 @@ void print_summary(const RenderOptions& o, const RenderSetup& s, const LoopResul
     }
     if (s.log) {
         const ErrorSample& e = s.log->last();
-        std::printf("error against %s: mse %.6g rel_mse %.6g block8_mse %.6g", o.reference.c_str(),
-                    e.mse, e.rel_mse, e.block8_mse);
+        std::printf("error against %s: mse %.6g rel_mse %.6g block8_mse %.6g block32_mse %.6g",
+                    o.reference.c_str(), e.mse, e.rel_mse, e.block8_mse, e.block32_mse);
         if (s.log->has_mask()) std::printf(" mse_unlit %.6g", e.mse_unlit);
         std::printf("\n");
     }

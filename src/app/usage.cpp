@@ -18,8 +18,9 @@ Usage:
   smallmlt budget SCENE [options]   device memory per bounce depth, without rendering
   smallmlt compare IMAGE REFERENCE [--mask FILE]
                                     error of IMAGE against REFERENCE (.pfm or .exr):
-                                    MSE, relative MSE and the MSE of 8x8 block means
-                                    (block8_mse) on linear values; with --mask, also
+                                    MSE, relative MSE and the MSE of 8x8 and 32x32
+                                    block means (block8_mse, block32_mse) on linear
+                                    values; with --mask, also
                                     the MSE over the pixels where FILE is black
                                     (mse_unlit)
   smallmlt devices                  list OpenCL devices and their memory

@@ -22,7 +22,8 @@ double image_rel_mse(const Image& img, const Image& ref);
 // over blocks and channels of the squared difference of those means. Blind
 // to noise that averages out within a block. Throws std::invalid_argument
 // unless block >= 1.
-constexpr int kErrorBlock = 8; // block8_mse
+constexpr int kErrorBlock = 8;      // block8_mse
+constexpr int kErrorBlockWide = 32; // block32_mse: the scale of MLT's blotches
 double image_block_mse(const Image& img, const Image& ref, int block);
 
 // MSE over the pixels where `mask` has zero luminance, e.g. all but the

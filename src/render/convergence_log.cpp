@@ -39,7 +39,8 @@ ConvergenceLog::ConvergenceLog(const std::string& reference_path, const std::str
     tmp_guard_ = std::make_unique<TempFileGuard>(tmp_path_);
     log_ = std::fopen(tmp_path_.c_str(), "w");
     if (!log_) throw InputError("--log " + log_path_ + ": " + std::strerror(errno));
-    std::fputs("seconds,samples_per_pixel,samples,mse,rel_mse,mse_unlit,block8_mse\n", log_);
+    std::fputs("seconds,samples_per_pixel,samples,mse,rel_mse,mse_unlit,block8_mse,block32_mse\n",
+               log_);
     std::fflush(log_);
 }
 
@@ -55,14 +56,15 @@ void ConvergenceLog::record(double render_s, double spp, const Image& img) {
              image_mse(img, reference_),
              image_rel_mse(img, reference_),
              has_mask() ? image_mse_excluding(img, reference_, mask_, mask_path_) : 0.0,
-             image_block_mse(img, reference_, kErrorBlock)};
+             image_block_mse(img, reference_, kErrorBlock),
+             image_block_mse(img, reference_, kErrorBlockWide)};
     measured_ = true;
     if (!log_) return;
     char unlit[32] = "";
     if (has_mask()) std::snprintf(unlit, sizeof unlit, "%.9g", last_.mse_unlit);
-    std::fprintf(log_, "%.4f,%.6g,%llu,%.9g,%.9g,%s,%.9g\n", render_s, spp,
+    std::fprintf(log_, "%.4f,%.6g,%llu,%.9g,%.9g,%s,%.9g,%.9g\n", render_s, spp,
                  static_cast<unsigned long long>(std::llround(spp * double(pixels_))), last_.mse,
-                 last_.rel_mse, unlit, last_.block8_mse);
+                 last_.rel_mse, unlit, last_.block8_mse, last_.block32_mse);
     std::fflush(log_);
     while (next_s_ <= render_s)
         next_s_ += interval_s_;

@@ -1,10 +1,10 @@
 // Error against a reference image during a render (--reference, --log):
 // MSE and relative MSE on linear RGB over the whole film, MSE over the
-// pixels that --reference-mask leaves (mse_unlit) and the MSE of 8x8 block
-// means (block8_mse), the definitions of `smallmlt compare`
-// (src/image/image_metrics.hpp). The log is a CSV with one row per interval
-// of render time, "seconds,samples_per_pixel,samples,mse,rel_mse,mse_unlit,
-// block8_mse", mse_unlit an empty field without a mask; it is written to a
+// pixels that --reference-mask leaves (mse_unlit) and the MSE of 8x8 and of
+// 32x32 block means (block8_mse, block32_mse), the definitions of `smallmlt
+// compare` (src/image/image_metrics.hpp). The log is a CSV with one row per
+// interval of render time, "seconds,samples_per_pixel,samples,mse,rel_mse,
+// mse_unlit,block8_mse,block32_mse", mse_unlit an empty field without a mask; it is written to a
 // temporary file and renamed into place when the render ends, so a failed
 // render leaves no log behind.
 #pragma once
@@ -23,7 +23,7 @@ struct ErrorSample {
     double spp = 0;     // samples (PT) or mutations (MLT) per pixel
     double mse = 0, rel_mse = 0;
     double mse_unlit = 0; // 0 without a mask
-    double block8_mse = 0;
+    double block8_mse = 0, block32_mse = 0;
 };
 
 class ConvergenceLog {
