@@ -22,9 +22,10 @@ BEstimate BurnInSums::b(std::uint64_t large_lum, std::uint64_t large) const {
 }
 
 double MltBurnIn::ranks_b(RankGroup& ranks) const {
+    // Whole numbers, summed exactly in double below 2^53.
     std::vector<double> sums{double(sums_.lum_fixed), double(sums_.samples)};
     ranks.sum_all(sums);
-    return sums[1] > 0 ? sums[0] / double(1u << MLT_B_FRAC_BITS) / sums[1] : 0;
+    return mlt_b(std::uint64_t(sums[0]), std::uint64_t(sums[1]));
 }
 
 MltBurnIn::MltBurnIn(const ClContext& cl, cl_program program, const MltOptions& opt,
