@@ -15,12 +15,11 @@ namespace smallmlt::known_target {
 constexpr const char* kProbeFile = "test/cl/probe_mlt.cl";
 
 // Diffuse and dielectric, no light, depth 4: each bounce has BSDF_U, BSDF_V
-// (24 bits), FRESNEL and RR (16 bits), 80 bits; slots straddle words.
+// (24 bits), BSDF_CHOICE and RR (16 bits), 80 bits; slots straddle words.
 constexpr int kDepth = 4;
 inline SceneFeatures target_features() {
     SceneFeatures f;
-    f.diffuse = true;
-    f.dielectric = true;
+    f.with(MAT_DIFFUSE).with(MAT_DIELECTRIC);
     f.depth = kDepth;
     return f;
 }
@@ -66,7 +65,7 @@ struct KnownTarget {
         H = h_stripes(0, 64);
         E = H;
         for (int s = 0; s < kSlotCount; ++s) {
-            if (!l.has(Slot(s)) || s == kBsdfU || s == kFresnel) continue;
+            if (!l.has(Slot(s)) || s == kBsdfU || s == kBsdfChoice) continue;
             double n = std::ldexp(1.0, l.bits[s]);
             E *= lin_sum(0, n, n, 0.75, 0.5) / n; // 3/4 + v/2
         }

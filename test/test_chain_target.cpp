@@ -226,7 +226,7 @@ TEST(ChainTargetLazy, CommitStoresExactlyTheNumbersRead) {
 // Chain states. C chains (K proposals each, threads = C K) start at OMC
 // burn-in picks, run `burn` steps, then S snapshots `every` steps apart read
 // the packed states (probe_chain_numbers: film numbers, a_0 = BSDF_U and
-// c_0 = FRESNEL of bounce 0, a_1 = BSDF_U of bounce 1, and the live bounces
+// c_0 = BSDF_CHOICE of bounce 0, a_1 = BSDF_U of bounce 1, and the live bounces
 // L from the ChainValue). Six statistics, each a Hotelling T^2 over chains
 // against the closed-form marginal; significance 1e-3 for the test, 1e-3 / 6
 // per statistic (Bonferroni), with fixed seeds.
@@ -267,11 +267,11 @@ TEST_P(ChainTarget, StatesFollowTheClosedFormMarginals) {
     mlt.prepare();
     const std::uint32_t chains = mlt.chains();
 
-    // Numbers to read: film 0, 1; bounce 0's BSDF_U and FRESNEL; bounce 1's BSDF_U.
+    // Numbers to read: film 0, 1; bounce 0's BSDF_U and BSDF_CHOICE; bounce 1's BSDF_U.
     auto dim = [&](int bounce, Slot s) {
         return cl_uint(kCameraDims + bounce * l.bounce_dims + l.index[s]);
     };
-    std::vector<cl_uint> dims = {0, 1, dim(0, kBsdfU), dim(0, kFresnel), dim(1, kBsdfU)};
+    std::vector<cl_uint> dims = {0, 1, dim(0, kBsdfU), dim(0, kBsdfChoice), dim(1, kBsdfU)};
     const cl_uint n = cl_uint(dims.size());
     ClBuffer dims_buf(test::cl(), CL_MEM_READ_ONLY, dims.size() * 4, dims.data());
     ClBuffer out(test::cl(), CL_MEM_WRITE_ONLY, std::size_t(chains) * (n + 1) * 4);

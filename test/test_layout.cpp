@@ -26,22 +26,28 @@ TEST(SharedLayout, DeviceAgreesWithHost) {
 }
 
 TEST(SampleLayout, OnlyTheSlotsTheSceneNeeds) {
-    SceneFeatures diffuse_one_light{true, false, false, 1, 3};
+    SceneFeatures diffuse_one_light = SceneFeatures().with(MAT_DIFFUSE);
+    diffuse_one_light.num_lights = 1;
+    diffuse_one_light.depth = 3;
     SampleLayout l = make_layout(diffuse_one_light);
     EXPECT_TRUE(l.has(kBsdfU) && l.has(kBsdfV) && l.has(kLightU) && l.has(kLightV));
     EXPECT_FALSE(l.has(kLightPick)) << "one light needs no light-pick slot";
-    EXPECT_FALSE(l.has(kFresnel)) << "no dielectric, no reflect/refract slot";
+    EXPECT_FALSE(l.has(kBsdfChoice)) << "no dielectric, no reflect/refract slot";
     EXPECT_FALSE(l.has(kRoulette)) << "depth 3 ends before Russian roulette starts";
     EXPECT_EQ(l.bounce_bits, 4 * kHighBits);
 
-    SceneFeatures water{true, false, true, 2, 24};
+    SceneFeatures water = SceneFeatures().with(MAT_DIFFUSE).with(MAT_DIELECTRIC);
+    water.num_lights = 2;
+    water.depth = 24;
     l = make_layout(water);
-    EXPECT_TRUE(l.has(kLightPick) && l.has(kFresnel) && l.has(kRoulette));
+    EXPECT_TRUE(l.has(kLightPick) && l.has(kBsdfChoice) && l.has(kRoulette));
     EXPECT_EQ(l.bounce_dims, 7);
     EXPECT_EQ(l.bounce_bits, 4 * kHighBits + 3 * kLowBits);
     EXPECT_EQ(l.vector_dims(), kCameraDims + 24 * 7);
 
-    SceneFeatures glass_only{false, false, true, 5, 8};
+    SceneFeatures glass_only = SceneFeatures().with(MAT_DIELECTRIC);
+    glass_only.num_lights = 5;
+    glass_only.depth = 8;
     l = make_layout(glass_only);
     EXPECT_EQ(l.bounce_dims, 2) << "no diffuse surface: no BSDF or light sampling slots";
 }

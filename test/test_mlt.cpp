@@ -59,14 +59,16 @@ void check_roundtrip(const SceneFeatures& f, bool float32) {
 // including 0 and the largest value below 1 (chains 0 and 1), with slots of
 // 24, 16 and a widened 17 bits packed across word boundaries.
 TEST(MltPacking, RoundTripIsBitExact) {
-    check_roundtrip({true, false, true, 2, 24}, false);  // 4 x 24 + 3 x 16 bits
-    check_roundtrip({true, true, true, 300, 24}, false); // light pick widened to 17 bits
-    check_roundtrip({false, true, false, 1, 5}, false);  // roulette only: 16 bits a bounce
-    check_roundtrip({true, false, true, 300, 24}, true); // the unpacked float32 build
+    using test::features;
+    check_roundtrip(features({MAT_DIFFUSE, MAT_DIELECTRIC}, 2, 24), false); // 4 x 24 + 3 x 16 bits
+    check_roundtrip(features({MAT_DIFFUSE, MAT_CONDUCTOR, MAT_DIELECTRIC}, 300, 24),
+                    false);                                  // light pick widened to 17 bits
+    check_roundtrip(features({MAT_CONDUCTOR}, 1, 5), false); // roulette only: 16 bits a bounce
+    check_roundtrip(features({MAT_DIFFUSE, MAT_DIELECTRIC}, 300, 24), true); // the float32 build
 }
 
 TEST(MltPacking, StateSizeFollowsTheLayout) {
-    SampleLayout water = make_layout({true, false, true, 2, 24});
+    SampleLayout water = make_layout(test::features({MAT_DIFFUSE, MAT_DIELECTRIC}, 2, 24));
     EXPECT_EQ(water.vector_bits(), 2 * 24 + 24 * (4 * 24 + 3 * 16));
     EXPECT_EQ(water.chain_words(false), std::uint32_t((water.vector_bits() + 31) / 32));
     EXPECT_EQ(water.chain_words(true), std::uint32_t(water.vector_dims()));

@@ -19,11 +19,11 @@ namespace {
 
 const char* kProbeFile = "test/cl/probe_mlt.cl";
 
-// Features whose layout has 24-bit (film, BSDF, light) and 16-bit (Fresnel,
-// roulette) slots, and a light pick of 16 bits (<= 256 lights) or 17 (300).
+// Features whose layout has 24-bit (film, BSDF, light) and 16-bit (lobe
+// choice, roulette) slots, and a light pick of 16 bits (<= 256 lights) or 17 (300).
 SceneFeatures features(std::uint32_t lights) {
     SceneFeatures f;
-    f.diffuse = f.dielectric = true;
+    f.with(MAT_DIFFUSE).with(MAT_DIELECTRIC);
     f.num_lights = lights;
     f.depth = 6;
     return f;

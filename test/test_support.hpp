@@ -68,6 +68,18 @@ inline Scene scene(const std::string& name, int width, int height, int depth = -
 
 // A scene with no geometry whose sample layout is `f`: enough for probe
 // kernels and for the known-target evaluator (test/cl/eval_target.cl).
+// Features of a scene with materials of `types`, `lights` emitters and
+// depth `depth`.
+inline SceneFeatures features(std::initializer_list<std::uint32_t> types, std::uint32_t lights,
+                              int depth) {
+    SceneFeatures f;
+    for (std::uint32_t t : types)
+        f.with(t);
+    f.num_lights = lights;
+    f.depth = depth;
+    return f;
+}
+
 inline DeviceScene layout_only_scene(const SceneFeatures& f, int width = 4, int height = 4) {
     DeviceScene ds;
     ds.layout = make_layout(f);

@@ -17,10 +17,34 @@ typedef std::uint64_t u64;
 typedef float f32;
 #endif
 
-/* Material.type */
-#define MAT_DIFFUSE 0u
-#define MAT_MIRROR 1u
-#define MAT_DIELECTRIC 2u
+/* The scattering models (cl/shading/<model>.cl), one list:
+ * X(NAME, Material.type, the numbers a bounce at it reads). MAT_USES_PAIR:
+ * the BSDF pair (a direction); MAT_USES_CHOICE: the 16-bit lobe choice;
+ * MAT_USES_NEE: it has a lobe that is not a Dirac delta, so next-event
+ * estimation runs at it (and reads the light numbers). The host derives the
+ * scene's sample layout from it (src/scene/sample_layout.cpp) and the
+ * kernels read by it (cl/shading/shading.cl). */
+#define MAT_USES_PAIR 1u
+#define MAT_USES_CHOICE 2u
+#define MAT_USES_NEE 4u
+#define MAT_MODELS(X)                                                                              \
+    X(DIFFUSE, 0, MAT_USES_PAIR | MAT_USES_NEE)                                                    \
+    X(CONDUCTOR, 1, 0u)                                                                            \
+    X(DIELECTRIC, 2, MAT_USES_CHOICE)                                                              \
+    X(ROUGH_CONDUCTOR, 3, MAT_USES_PAIR | MAT_USES_NEE)                                            \
+    X(ROUGH_DIELECTRIC, 4, MAT_USES_PAIR | MAT_USES_CHOICE | MAT_USES_NEE)                         \
+    X(PLASTIC, 5, MAT_USES_PAIR | MAT_USES_CHOICE | MAT_USES_NEE)                                  \
+    X(ROUGH_PLASTIC, 6, MAT_USES_PAIR | MAT_USES_CHOICE | MAT_USES_NEE)
+
+#define MAT_TYPE_ID(NAME, id, uses) MAT_##NAME = id,
+enum { MAT_MODELS(MAT_TYPE_ID) MAT_TYPES };
+#undef MAT_TYPE_ID
+
+/* Material.flags: MAT_FLAG_BECKMANN, the microfacet distribution is
+ * Beckmann's (else GGX); MAT_FLAG_TWO_SIDED, an opaque model reflects on both
+ * sides (else its back is black). */
+#define MAT_FLAG_BECKMANN 1u
+#define MAT_FLAG_TWO_SIDED 2u
 
 /* Marks "no light" in Triangle.light_index. */
 #define LIGHT_NONE 0xFFFFFFFFu
@@ -48,10 +72,24 @@ typedef struct {
     u32 count;
 } BvhNode;
 
-/* kd: diffuse albedo, ks: mirror reflectance, ke: emitted radiance
- * (W sr^-1 m^-2 per channel, front face only), ior: a dielectric's index of
- * refraction; its inside is on the back side of its triangles and the front
- * side is vacuum (index 1). emissive is 1 when any ke channel is > 0. 48 bytes. */
+/* A material: `type` is its model (MAT_MODELS), which reads only its own
+ * fields. Colours are RGB.
+ * - kd: diffuse albedo (diffuse; plastic's base);
+ * - ke: emitted radiance (W sr^-1 m^-2 per channel, front face only);
+ *   emissive is 1 when any ke channel is > 0; any model may emit;
+ * - ks: specular reflectance, a factor on the Fresnel term (conductors,
+ *   plastic's coat) or on both lobes (dielectrics);
+ * - ior: a dielectric's or a plastic coat's index of refraction relative to
+ *   the front side (the inside of a dielectric is behind its triangles);
+ * - eta, k: a conductor's complex index of refraction eta + i k, relative to
+ *   the front side; eta 0, k 1 reflects everything (Fresnel term 1);
+ * - alpha: microfacet roughness (GGX or Beckmann alpha, rough models);
+ * - flags: MAT_FLAG_*;
+ * - fdr_int: plastic: the coat's hemispherical reflectance from inside
+ *   (the host integrates it, src/scene/material.cpp);
+ * - spec_weight: plastic: the share of its lobe choice given to the coat
+ *   before Fresnel, lum(ks) / (lum(ks) + lum(kd)).
+ * 88 bytes. */
 typedef struct {
     f32 kd[3];
     u32 type;
@@ -59,6 +97,12 @@ typedef struct {
     f32 ior;
     f32 ks[3];
     u32 emissive;
+    f32 eta[3];
+    f32 alpha;
+    f32 k[3];
+    u32 flags;
+    f32 fdr_int;
+    f32 spec_weight;
 } Material;
 
 /* An emissive triangle for next-event estimation. The triangle is picked when
@@ -158,25 +202,25 @@ typedef struct {
  * The host static_asserts it (src/scene/shared_layout.cpp), and the host and
  * a probe kernel (test/cl/probe.cl) both report sizes and offsets in its
  * order for a test to compare. */
+/* clang-format off */
 #define SHARED_LAYOUT(S, F)                                                                        \
-    S(Triangle, 48)                                                                                \
-    F(Triangle, material, 12)                                                                      \
-    F(Triangle, e1, 16) F(Triangle, light_pick_prob, 28) F(Triangle, e2, 32)                       \
-        F(Triangle, light_index, 44) S(BvhNode, 32) F(BvhNode, offset, 12) F(BvhNode, hi, 16)      \
-            F(BvhNode, count, 28) S(Material, 48) F(Material, type, 12) F(Material, ke, 16)        \
-                F(Material, ior, 28) F(Material, ks, 32) F(Material, emissive, 44)                 \
-                    S(LightEntry, 8) F(LightEntry, cdf_hi, 4) S(Frame, 64) F(Frame, width, 12)     \
-                        F(Frame, top_left, 16) F(Frame, height, 28) F(Frame, du, 32)               \
-                            F(Frame, depth, 44) F(Frame, dv, 48) F(Frame, num_lights, 60)          \
-                                S(ChainValue, 20) F(ChainValue, meta, 12) F(ChainValue, stay, 16)  \
-                                    S(FilmShape, 20) F(FilmShape, bands, 4)                        \
-                                        F(FilmShape, frac_bits, 8) F(FilmShape, scale, 12)         \
-                                            F(FilmShape, layers, 16) S(TargetCells, 8)             \
-                                                F(TargetCells, columns, 4) S(BurnInFilm, 20)       \
-                                                    F(BurnInFilm, seed_hi, 4)                      \
-                                                        F(BurnInFilm, offset, 8)                   \
-                                                            F(BurnInFilm, step, 12)                \
-                                                                F(BurnInFilm, per_round, 16)
+    S(Triangle, 48) F(Triangle, material, 12) F(Triangle, e1, 16)                                  \
+        F(Triangle, light_pick_prob, 28) F(Triangle, e2, 32) F(Triangle, light_index, 44)          \
+    S(BvhNode, 32) F(BvhNode, offset, 12) F(BvhNode, hi, 16) F(BvhNode, count, 28)                 \
+    S(Material, 88) F(Material, type, 12) F(Material, ke, 16) F(Material, ior, 28)                 \
+        F(Material, ks, 32) F(Material, emissive, 44) F(Material, eta, 48)                         \
+        F(Material, alpha, 60) F(Material, k, 64) F(Material, flags, 76)                           \
+        F(Material, fdr_int, 80) F(Material, spec_weight, 84)                                      \
+    S(LightEntry, 8) F(LightEntry, cdf_hi, 4)                                                      \
+    S(Frame, 64) F(Frame, width, 12) F(Frame, top_left, 16) F(Frame, height, 28)                   \
+        F(Frame, du, 32) F(Frame, depth, 44) F(Frame, dv, 48) F(Frame, num_lights, 60)             \
+    S(ChainValue, 20) F(ChainValue, meta, 12) F(ChainValue, stay, 16)                              \
+    S(FilmShape, 20) F(FilmShape, bands, 4) F(FilmShape, frac_bits, 8) F(FilmShape, scale, 12)     \
+        F(FilmShape, layers, 16)                                                                   \
+    S(TargetCells, 8) F(TargetCells, columns, 4)                                                   \
+    S(BurnInFilm, 20) F(BurnInFilm, seed_hi, 4) F(BurnInFilm, offset, 8)                          \
+        F(BurnInFilm, step, 12) F(BurnInFilm, per_round, 16)
+/* clang-format on */
 
 #define FILM_MAX_BANDS 4
 

@@ -32,11 +32,11 @@ inline BsdfSample shading_sample(SampleSource* src, uint bounce, const Material*
                                  float3 n, float3 n_wo) {
 #if LAYOUT_HAS_DIELECTRIC
     if (m->type == MAT_DIELECTRIC)
-        return bsdf_sample_dielectric(m, wo, n, smp_number(src, bounce, SLOT_FRESNEL),
-                                      SLOT_FRESNEL_BITS);
+        return bsdf_sample_dielectric(m, wo, n, smp_number(src, bounce, SLOT_BSDF_CHOICE),
+                                      SLOT_BSDF_CHOICE_BITS);
 #endif
-#if LAYOUT_HAS_MIRROR
-    if (m->type == MAT_MIRROR) return bsdf_sample_mirror(m, wo, n_wo);
+#if LAYOUT_HAS_CONDUCTOR
+    if (m->type == MAT_CONDUCTOR) return bsdf_sample_mirror(m, wo, n_wo);
 #endif
 #if LAYOUT_HAS_DIFFUSE
     float u1 = smp_number(src, bounce, SLOT_BSDF_U);

@@ -90,9 +90,7 @@ DeviceScene prepare_scene(const Scene& scene) {
         t.light_index = LIGHT_NONE;
         ds.tris.push_back(t);
         const Material& m = scene.materials[st.material];
-        features.diffuse |= m.type == MAT_DIFFUSE;
-        features.mirror |= m.type == MAT_MIRROR;
-        features.dielectric |= m.type == MAT_DIELECTRIC;
+        features.with(m.type);
     }
     build_lights(ds);
     features.num_lights = static_cast<std::uint32_t>(ds.lights.size());

@@ -1,6 +1,7 @@
 // Reader of MTL material files: the subset of doc/scene-format.md, and an
 // error naming file and line for anything else.
 #include "base/error.hpp"
+#include "scene/material.hpp"
 #include "scene/scene.hpp"
 #include "scene/text_parse.hpp"
 
@@ -29,19 +30,16 @@ void read_rgb(const std::vector<std::string>& t, const std::string& file, int li
     }
 }
 
+Vec3 vec(const float c[3]) {
+    return {c[0], c[1], c[2]};
+}
+
 Material finish(const PendingMaterial& p, const std::string& file) {
     Material m{};
-    for (int i = 0; i < 3; ++i) {
-        m.kd[i] = p.kd[i];
-        m.ke[i] = p.ke[i];
-        m.ks[i] = p.ks[i];
-    }
-    m.emissive = (p.ke[0] > 0 || p.ke[1] > 0 || p.ke[2] > 0) ? 1u : 0u;
-    m.ior = 1.0f;
     switch (p.illum) {
     case 0:
     case 1:
-        m.type = MAT_DIFFUSE;
+        m = diffuse_material(vec(p.kd));
         break;
     case 2:
         if (p.ks[0] > 0 || p.ks[1] > 0 || p.ks[2] > 0)
@@ -49,7 +47,7 @@ Material finish(const PendingMaterial& p, const std::string& file) {
                               "material '" + p.name +
                                   "': illum 2 with non-zero Ks is a glossy highlight, which is "
                                   "not supported (use Ks 0 0 0, or illum 5 for a mirror)");
-        m.type = MAT_DIFFUSE;
+        m = diffuse_material(vec(p.kd));
         break;
     case 3:
     case 5:
@@ -57,20 +55,20 @@ Material finish(const PendingMaterial& p, const std::string& file) {
             throw input_error(file, p.illum_line,
                               "material '" + p.name + "': a mirror (illum " +
                                   std::to_string(p.illum) + ") needs Ks");
-        m.type = MAT_MIRROR;
+        m = conductor_material(vec(p.ks), {0, 0, 0}, {1, 1, 1}, 0.0f);
         break;
     case 7:
         if (!(p.ior > 0))
             throw input_error(file, p.illum_line,
                               "material '" + p.name + "': a dielectric (illum 7) needs Ni > 0");
-        m.type = MAT_DIELECTRIC;
-        m.ior = p.ior;
+        m = dielectric_material(p.ior, 0.0f);
         break;
     default:
         throw input_error(file, p.illum_line,
                           "material '" + p.name + "': illum " + std::to_string(p.illum) +
                               " is not supported (0, 1, 2: diffuse; 3, 5: mirror; 7: dielectric)");
     }
+    set_emission(m, vec(p.ke));
     return m;
 }
 

@@ -7,8 +7,8 @@
 namespace smallmlt {
 
 const char* slot_name(Slot s) {
-    static const char* names[kSlotCount] = {"BSDF_U",     "BSDF_V",  "LIGHT_U", "LIGHT_V",
-                                            "LIGHT_PICK", "FRESNEL", "RR"};
+    static const char* names[kSlotCount] = {"BSDF_U",     "BSDF_V",      "LIGHT_U", "LIGHT_V",
+                                            "LIGHT_PICK", "BSDF_CHOICE", "RR"};
     return names[s];
 }
 
@@ -19,13 +19,26 @@ int light_pick_bits(std::uint32_t num_lights) {
     return bits < kLowBits ? kLowBits : bits;
 }
 
+std::uint32_t SceneFeatures::uses() const {
+    static const std::uint32_t kUses[MAT_TYPES] = {
+#define SMALLMLT_MODEL_USES(NAME, id, uses) uses,
+        MAT_MODELS(SMALLMLT_MODEL_USES)
+#undef SMALLMLT_MODEL_USES
+    };
+    std::uint32_t u = 0;
+    for (std::uint32_t t = 0; t < MAT_TYPES; ++t)
+        if (has(t)) u |= kUses[t];
+    return u;
+}
+
 SampleLayout make_layout(const SceneFeatures& f, const Roulette& rr) {
     bool want[kSlotCount] = {};
-    bool nee = f.diffuse && f.num_lights > 0;
-    want[kBsdfU] = want[kBsdfV] = f.diffuse;
+    const std::uint32_t uses = f.uses();
+    bool nee = (uses & MAT_USES_NEE) && f.num_lights > 0;
+    want[kBsdfU] = want[kBsdfV] = (uses & MAT_USES_PAIR) != 0;
     want[kLightU] = want[kLightV] = nee;
     want[kLightPick] = nee && f.num_lights > 1;
-    want[kFresnel] = f.dielectric;
+    want[kBsdfChoice] = (uses & MAT_USES_CHOICE) != 0;
     want[kRoulette] = f.depth > rr.start;
     int width[kSlotCount] = {
         kHighBits, kHighBits, kHighBits, kHighBits, light_pick_bits(f.num_lights),
@@ -55,9 +68,12 @@ std::string SampleLayout::defines() const {
     std::ostringstream d;
     d << "#define LAYOUT_CAMERA_DIMS " << kCameraDims << "u\n";
     d << "#define LAYOUT_BOUNCE_DIMS " << bounce_dims << "u\n";
-    d << "#define LAYOUT_HAS_DIFFUSE " << (features.diffuse ? 1 : 0) << "\n";
-    d << "#define LAYOUT_HAS_MIRROR " << (features.mirror ? 1 : 0) << "\n";
-    d << "#define LAYOUT_HAS_DIELECTRIC " << (features.dielectric ? 1 : 0) << "\n";
+#define SMALLMLT_MODEL_DEFINE(NAME, id, uses)                                                      \
+    d << "#define LAYOUT_HAS_" #NAME " " << (features.has(id) ? 1 : 0) << "\n";
+    MAT_MODELS(SMALLMLT_MODEL_DEFINE)
+#undef SMALLMLT_MODEL_DEFINE
+    d << "#define LAYOUT_HAS_SHADING_NORMALS " << (features.shading_normals ? 1 : 0) << "\n";
+    d << "#define LAYOUT_CHOICE_BITS " << kLowBits << "u\n";
     d << "#define LAYOUT_HAS_NEE " << (has(kLightU) ? 1 : 0) << "\n";
     d << "#define LAYOUT_CAMERA_BITS " << kHighBits << "u\n";
     d << "#define LAYOUT_BOUNCE_BITS " << bounce_bits << "u\n";

@@ -2,6 +2,8 @@
 // bounce has and how many bits each is stored in. "Model no more than a scene
 // needs": a slot exists only if the scene's materials and lights use it.
 #pragma once
+#include "shared_types.h"
+
 #include <cstdint>
 #include <string>
 
@@ -9,9 +11,18 @@ namespace smallmlt {
 
 // What a scene's paths can do, which decides the layout.
 struct SceneFeatures {
-    bool diffuse = false, mirror = false, dielectric = false;
+    std::uint32_t models = 0;     // bit t: a triangle has a material of type t (MAT_MODELS)
     std::uint32_t num_lights = 0; // emissive triangles
     int depth = 0;
+    bool shading_normals = false; // some triangle has interpolated normals
+
+    bool has(std::uint32_t type) const { return (models >> type & 1u) != 0; }
+    SceneFeatures& with(std::uint32_t type) {
+        models |= 1u << type;
+        return *this;
+    }
+    // The union of the MAT_USES_* of its models: the numbers a bounce reads.
+    std::uint32_t uses() const;
 };
 
 // Russian roulette (cl/path/path.cl, path_survives): after scattering at a bounce
@@ -28,7 +39,18 @@ struct Roulette {
     static Roulette classic() { return {3, 1.0f, 0.95f, false}; }
 };
 
-enum Slot : int { kBsdfU, kBsdfV, kLightU, kLightV, kLightPick, kFresnel, kRoulette, kSlotCount };
+// Slots by kind: the BSDF pair, the light pair, the light pick, the BSDF's
+// lobe choice and Russian roulette.
+enum Slot : int {
+    kBsdfU,
+    kBsdfV,
+    kLightU,
+    kLightV,
+    kLightPick,
+    kBsdfChoice,
+    kRoulette,
+    kSlotCount
+};
 
 constexpr int kHighBits = 24;  // continuous slots (BSDF and light sampling)
 constexpr int kLowBits = 16;   // discrete choices

@@ -12,7 +12,7 @@
  * number of its slots; e_k is the product of one factor per slot:
  * - SLOT_BSDF_U (24 bits), value a: h(a) = 0 for a < 1/8, above it
  *   (1/2 + a) times 3/2 on the odd stripes of 64 and 1/2 on the even ones;
- * - the continuation slot (SLOT_FRESNEL, else SLOT_RR; 16 bits), value c:
+ * - the continuation slot (SLOT_BSDF_CHOICE, else SLOT_RR; 16 bits), value c:
  *   p(c) = (3/4 + c/2) s(c, 128) [c < 15/16]; the path goes on to bounce
  *   k + 1 iff the phase of c in 32 stripes, frac(32 c), is below q(x) (q = 1/2
  *   on the left half of the film, x < 1/2, and 3/4 on the right) and
@@ -34,8 +34,8 @@
 #define TARGET_Q_LEFT 0.5f
 #define TARGET_Q_RIGHT 0.75f
 
-#if SLOT_FRESNEL >= 0
-#define TARGET_SLOT_GO_ON SLOT_FRESNEL
+#if SLOT_BSDF_CHOICE >= 0
+#define TARGET_SLOT_GO_ON SLOT_BSDF_CHOICE
 #else
 #define TARGET_SLOT_GO_ON SLOT_RR
 #endif

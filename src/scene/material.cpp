@@ -1,0 +1,98 @@
+#include "scene/material.hpp"
+
+#include "base/color.hpp"
+
+#include <cmath>
+
+namespace smallmlt {
+
+namespace {
+
+void store(f32 out[3], Vec3 v) {
+    out[0] = v.x;
+    out[1] = v.y;
+    out[2] = v.z;
+}
+
+Material base(u32 type) {
+    Material m{};
+    m.type = type;
+    m.ior = 1.0f;
+    m.flags = MAT_FLAG_TWO_SIDED;
+    return m;
+}
+
+u32 distribution_flag(Microfacet d) {
+    return d == Microfacet::Beckmann ? MAT_FLAG_BECKMANN : 0u;
+}
+
+} // namespace
+
+Material diffuse_material(Vec3 kd) {
+    Material m = base(MAT_DIFFUSE);
+    store(m.kd, kd);
+    return m;
+}
+
+Material conductor_material(Vec3 ks, Vec3 eta, Vec3 k, float alpha, Microfacet d) {
+    bool rough = alpha >= kSmoothAlpha;
+    Material m = base(rough ? MAT_ROUGH_CONDUCTOR : MAT_CONDUCTOR);
+    store(m.ks, ks);
+    store(m.eta, eta);
+    store(m.k, k);
+    m.alpha = rough ? alpha : 0.0f;
+    m.flags |= distribution_flag(d);
+    return m;
+}
+
+Material dielectric_material(float ior, float alpha, Microfacet d) {
+    bool rough = alpha >= kSmoothAlpha;
+    Material m = base(rough ? MAT_ROUGH_DIELECTRIC : MAT_DIELECTRIC);
+    store(m.ks, {1, 1, 1});
+    m.ior = ior;
+    m.alpha = rough ? alpha : 0.0f;
+    m.flags = distribution_flag(d); // both sides are its own
+    return m;
+}
+
+Material plastic_material(Vec3 kd, Vec3 ks, float ior, float alpha, Microfacet d) {
+    bool rough = alpha >= kSmoothAlpha;
+    Material m = base(rough ? MAT_ROUGH_PLASTIC : MAT_PLASTIC);
+    store(m.kd, kd);
+    store(m.ks, ks);
+    m.ior = ior;
+    m.alpha = rough ? alpha : 0.0f;
+    m.flags |= distribution_flag(d);
+    m.fdr_int = static_cast<f32>(fresnel_diffuse_reflectance(1.0 / ior));
+    double s = rgb_luminance(ks.x, ks.y, ks.z), b = rgb_luminance(kd.x, kd.y, kd.z);
+    m.spec_weight = s + b > 0 ? static_cast<f32>(s / (s + b)) : 0.5f;
+    return m;
+}
+
+void set_emission(Material& m, Vec3 ke) {
+    store(m.ke, ke);
+    m.emissive = (ke.x > 0 || ke.y > 0 || ke.z > 0) ? 1u : 0u;
+}
+
+double fresnel_dielectric(double cos_i, double eta) {
+    double sin2_t = (1 - cos_i * cos_i) / (eta * eta);
+    if (sin2_t >= 1) return 1;
+    double cos_t = std::sqrt(1 - sin2_t);
+    double r_s = (cos_i - eta * cos_t) / (cos_i + eta * cos_t);
+    double r_p = (eta * cos_i - cos_t) / (eta * cos_i + cos_t);
+    return 0.5 * (r_s * r_s + r_p * r_p);
+}
+
+double fresnel_diffuse_reflectance(double eta) {
+    // F has a kink at the critical angle (eta < 1): many intervals.
+    const int n = 1 << 14;
+    double sum = 0;
+    for (int i = 0; i <= n; ++i) {
+        double c = double(i) / n;
+        double w = (i == 0 || i == n) ? 1 : (i % 2 ? 4 : 2);
+        sum += w * fresnel_dielectric(c, eta) * c;
+    }
+    return 2 * sum / (3.0 * n);
+}
+
+} // namespace smallmlt

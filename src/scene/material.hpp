@@ -1,0 +1,37 @@
+// Constructors of the shared Material (cl/core/shared_types.h): each sets
+// the fields its model reads and the ones derived from them, so a Material
+// made here is complete. Definitions of the models: doc/design.md,
+// "Materials".
+#pragma once
+#include "base/vec3.hpp"
+#include "shared_types.h"
+
+namespace smallmlt {
+
+// A microfacet alpha below this is read as a smooth surface: the smooth
+// model renders it (its lobe is narrower than one pixel's blur at any
+// distance the scenes use, and a GGX lobe that narrow loses float precision).
+constexpr float kSmoothAlpha = 1e-3f;
+
+enum class Microfacet { Ggx, Beckmann };
+
+Material diffuse_material(Vec3 kd);
+// A conductor of complex index eta + i k; ks scales its Fresnel term.
+// eta 0, k 1 reflects everything (a mirror of reflectance ks).
+Material conductor_material(Vec3 ks, Vec3 eta, Vec3 k, float alpha, Microfacet d = Microfacet::Ggx);
+Material dielectric_material(float ior, float alpha, Microfacet d = Microfacet::Ggx);
+// A diffuse base of albedo kd under a dielectric coat of index ior.
+Material plastic_material(Vec3 kd, Vec3 ks, float ior, float alpha, Microfacet d = Microfacet::Ggx);
+
+void set_emission(Material& m, Vec3 ke);
+
+// Unpolarized Fresnel reflectance of a smooth interface for cosine cos_i on
+// the incident side and relative index eta = eta_t / eta_i (total internal
+// reflection gives 1).
+double fresnel_dielectric(double cos_i, double eta);
+
+// The cosine-weighted hemispherical average of fresnel_dielectric:
+// 2 * integral over cos in [0, 1] of F(cos, eta) cos, by Simpson's rule.
+double fresnel_diffuse_reflectance(double eta);
+
+} // namespace smallmlt
