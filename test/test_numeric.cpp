@@ -82,7 +82,8 @@ TEST(Numeric, BoxedInLightRendersBlack) {
     s.materials.push_back(lamp);
     s.material_names.push_back("lamp");
     std::uint32_t id = std::uint32_t(s.materials.size() - 1);
-    s.triangles.push_back({{{0, 100, 100}, {0.01f, 100, 100}, {0, 100.01f, 100}}, id});
+    s.triangles.push_back(
+        SceneTriangle::flat({0, 100, 100}, {0.01f, 100, 100}, {0, 100.01f, 100}, id));
     DeviceScene ds = prepare_scene(s);
     PathTracer pt(test::cl(), ds, 1);
     pt.add_samples(4);

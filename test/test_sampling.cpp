@@ -39,7 +39,7 @@ DeviceScene five_lights_scene() {
     floor.type = MAT_DIFFUSE;
     floor.kd[0] = floor.kd[1] = floor.kd[2] = 0.5f;
     s.materials.push_back(floor);
-    s.triangles.push_back({{{-1, 0, -1}, {-1, 0, 1}, {1, 0, 1}}, 0});
+    s.triangles.push_back(SceneTriangle::flat({-1, 0, -1}, {-1, 0, 1}, {1, 0, 1}, 0));
     const float ke[5] = {1.0f, 4.0f, 0.5f, 9.0f, 2.0f};
     for (int k = 0; k < 5; ++k) {
         Material light{};
@@ -48,8 +48,8 @@ DeviceScene five_lights_scene() {
         light.emissive = 1;
         s.materials.push_back(light);
         float x = -1.0f + 0.4f * float(k), size = 0.1f + 0.07f * float(k);
-        s.triangles.push_back({{{x, 2, 0}, {x + size, 2, 0}, {x, 2, size * (1.0f + float(k))}},
-                               std::uint32_t(k + 1)});
+        s.triangles.push_back(SceneTriangle::flat(
+            {x, 2, 0}, {x + size, 2, 0}, {x, 2, size * (1.0f + float(k))}, std::uint32_t(k + 1)));
     }
     return prepare_scene(s);
 }
@@ -171,7 +171,7 @@ TEST(LightSampling, PointsAreUniformOnTheTriangle) {
     }
 }
 
-// bsdf_sample_diffuse draws directions with density cos(theta) / pi: then
+// diffuse_sample draws directions with density cos(theta) / pi: then
 // cos^2(theta) and the azimuth are uniform and independent (cells of equal
 // probability), and pdf_w is cos(theta) / pi.
 TEST(DiffuseSampling, DirectionsAreCosineWeighted) {
@@ -213,7 +213,7 @@ TEST(DiffuseSampling, DirectionsAreCosineWeighted) {
     EXPECT_LT(worst_pdf, 1e-5) << "pdf_w is not cos(theta) / pi";
 }
 
-// bsdf_sample_dielectric reflects with probability p = Fresnel rounded up
+// dielectric_sample reflects with probability p = Fresnel rounded up
 // to the choice slot's grid, and weights the two branches F / p and
 // (1 - F) / (1 - p) eta^2, so the expected weight is exact. Checked from
 // outside and inside at three angles (binomial z-test, Bonferroni over the
@@ -228,7 +228,7 @@ TEST(DielectricSampling, ChoiceFollowsTheQuantizedFresnelTerm) {
     ClKernel k(prog.p, "probe_dielectric_choice");
     const double z_crit = 3.94; // two-sided 1e-3 / 6
     for (float cos_o : {0.9f, 0.5f, 0.1f, -0.95f, -0.8f, -0.5f}) {
-        k.set_args(cos_o, ior, bits, cl_ulong(17), n, refl, wts);
+        k.set_args(cos_o, ior, cl_ulong(17), n, refl, wts);
         k.run(test::cl(), n);
         double ci = std::fabs(double(cos_o));
         double eta = cos_o > 0 ? 1.0 / ior : double(ior);

@@ -238,9 +238,11 @@ void subdivide_lights(Scene& scene, int n) {
         auto at = [&](int i, int j) { return t.v[0] + e1 * float(i) + e2 * float(j); };
         for (int i = 0; i < n; ++i)
             for (int j = 0; i + j < n; ++j) {
-                out.push_back({{at(i, j), at(i + 1, j), at(i, j + 1)}, t.material});
+                out.push_back(
+                    SceneTriangle::flat(at(i, j), at(i + 1, j), at(i, j + 1), t.material));
                 if (i + j + 1 < n)
-                    out.push_back({{at(i + 1, j), at(i + 1, j + 1), at(i, j + 1)}, t.material});
+                    out.push_back(SceneTriangle::flat(at(i + 1, j), at(i + 1, j + 1), at(i, j + 1),
+                                                      t.material));
             }
     }
     scene.triangles = out;

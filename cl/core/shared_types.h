@@ -62,6 +62,15 @@ typedef struct {
     u32 light_index;
 } Triangle;
 
+/* The shading normals of a triangle (unit, world space) at v0, v1, v2, for
+ * scenes with vertex normals (SceneFeatures.shading_normals); a
+ * one-element buffer otherwise. 36 bytes. */
+typedef struct {
+    f32 n0[3];
+    f32 n1[3];
+    f32 n2[3];
+} TriangleNormals;
+
 /* Flattened BVH node, depth-first order. count == 0: interior node whose
  * first child is the next node and second child is node `offset`.
  * count > 0: leaf holding triangles offset .. offset + count - 1. 32 bytes. */
@@ -206,6 +215,7 @@ typedef struct {
 #define SHARED_LAYOUT(S, F)                                                                        \
     S(Triangle, 48) F(Triangle, material, 12) F(Triangle, e1, 16)                                  \
         F(Triangle, light_pick_prob, 28) F(Triangle, e2, 32) F(Triangle, light_index, 44)          \
+    S(TriangleNormals, 36) F(TriangleNormals, n1, 12) F(TriangleNormals, n2, 24)                 \
     S(BvhNode, 32) F(BvhNode, offset, 12) F(BvhNode, hi, 16) F(BvhNode, count, 28)                 \
     S(Material, 88) F(Material, type, 12) F(Material, ke, 16) F(Material, ior, 28)                 \
         F(Material, ks, 32) F(Material, emissive, 44) F(Material, eta, 48)                         \
@@ -233,7 +243,8 @@ typedef struct {
  * FILM_MAX_BANDS, then its FilmShape: FILM_ARGS (cl/mlt/film.cl), bound as
  * one MltFilm (src/render/mlt_film.hpp). */
 #define SCENE_BUFFERS(X)                                                                           \
-    X(Triangle, tris) X(BvhNode, nodes) X(Material, materials) X(LightEntry, lights)
+    X(Triangle, tris)                                                                              \
+    X(TriangleNormals, normals) X(BvhNode, nodes) X(Material, materials) X(LightEntry, lights)
 #define FILM_BANDS(X) X(FilmWord, band0) X(FilmWord, band1) X(FilmWord, band2) X(FilmWord, band3)
 #define FILM64_FRAC_BITS 24
 

@@ -42,6 +42,19 @@ inline float geo_intersect(const Ray* ray, const __global Triangle* t) {
     return (dist > 0.0f && dist < ray->tmax) ? dist : -1.0f;
 }
 
+/* Barycentrics (b1, b2) of v1 and v2 at the point where `ray` meets
+ * triangle t (the arithmetic of geo_intersect). */
+inline float2 geo_barycentrics(const Ray* ray, const __global Triangle* t) {
+    float3 e1 = geo_load3(t->e1);
+    float3 e2 = geo_load3(t->e2);
+    float3 p = cross(ray->d, e2);
+    float inv_det = 1.0f / dot(e1, p);
+    float3 s = ray->o - geo_load3(t->v0);
+    float b1 = dot(s, p) * inv_det;
+    float b2 = dot(ray->d, cross(s, e1)) * inv_det;
+    return (float2)(b1, b2);
+}
+
 /* Start point for a ray leaving surface point p on the side of normal n,
  * pushed off by a distance relative to the coordinates' magnitude. */
 inline float3 geo_offset(float3 p, float3 n) {

@@ -19,6 +19,7 @@
 
 typedef struct {
     const __global Triangle* tris;
+    const __global TriangleNormals* normals;
     const __global BvhNode* nodes;
     const __global Material* mats;
     const __global LightEntry* lights;
@@ -41,9 +42,9 @@ inline float path_max3(float3 v) {
     return fmax(v.x, fmax(v.y, v.z));
 }
 
-/* Direct light at vertex x seen from wo, with normal n_wo (facing wo). */
+/* Direct light at vertex x seen from wo, at material m of shading frame f. */
 float3 path_next_event(const SceneView* sc, SampleSource* src, uint bounce, float3 x, float3 wo,
-                       float3 n_wo, const Material* m, uint* rays) {
+                       const ShadingFrame* f, const Material* m, uint* rays) {
 #if LAYOUT_HAS_NEE
     uint pick = 0;
 #if SLOT_LIGHT_PICK >= 0
@@ -56,18 +57,17 @@ float3 path_next_event(const SceneView* sc, SampleSource* src, uint bounce, floa
     float u2 = smp_number(src, bounce, SLOT_LIGHT_V);
     LightSample ls;
     if (!light_sample_tri(lt, sc->mats, x, u1, u2, &ls)) return (float3)(0.0f);
-    float cos_x = dot(n_wo, ls.wi);
-    if (cos_x <= 0.0f) return (float3)(0.0f);
+    ShadingEval e = shading_eval(m, f, wo, ls.wi);
+    if (!(path_max3(e.f_cos) > 0.0f)) return (float3)(0.0f);
     Ray shadow;
-    shadow.o = geo_offset(x, n_wo);
+    shadow.o = geo_offset(x, dot(ls.wi, f->ng) >= 0.0f ? f->ng : -f->ng);
     shadow.d = ls.wi;
     shadow.tmax = length(x + ls.wi * ls.dist - shadow.o) * (1.0f - 1e-4f);
     Hit h;
     ++*rays;
     if (bvh_trace(sc->nodes, sc->tris, &shadow, &h, true)) return (float3)(0.0f);
-    float w = light_power_heuristic(ls.pdf_w, shading_pdf_w(m, wo, ls.wi, n_wo));
-    float3 f = shading_eval(m, wo, ls.wi, n_wo);
-    return ls.radiance * f * (cos_x * w / ls.pdf_w);
+    float w = light_power_heuristic(ls.pdf_w, e.pdf_w);
+    return ls.radiance * e.f_cos * (w / ls.pdf_w);
 #else
     return (float3)(0.0f);
 #endif
@@ -113,6 +113,27 @@ inline float3 path_radiance(const PathResult* r) {
     return r->omc + r->rest;
 }
 
+/* The shading normal at a hit: the triangle's vertex normals interpolated
+ * by the hit's barycentrics, turned to the geometric normal ng's side;
+ * ng itself where the scene has no vertex normals. */
+inline float3 path_shading_normal(const SceneView* sc, const Ray* ray, const Hit* hit, float3 ng) {
+#if LAYOUT_HAS_SHADING_NORMALS
+    const __global TriangleNormals* tn = &sc->normals[hit->tri];
+    float2 b = geo_barycentrics(ray, &sc->tris[hit->tri]);
+    float3 n =
+        geo_load3(tn->n0) * (1.0f - b.x - b.y) + geo_load3(tn->n1) * b.x + geo_load3(tn->n2) * b.y;
+    float l = length(n);
+    if (!(l > 0.0f)) return ng;
+    n /= l;
+    return dot(n, ng) < 0.0f ? -n : n;
+#else
+    (void)sc;
+    (void)ray;
+    (void)hit;
+    return ng;
+#endif
+}
+
 /* Radiance carried to the camera along `ray` by the path that src defines. */
 PathResult path_trace(const SceneView* sc, SampleSource* src, Ray ray) {
     PathResult res;
@@ -128,9 +149,9 @@ PathResult path_trace(const SceneView* sc, SampleSource* src, Ray ray) {
         if (!bvh_trace(sc->nodes, sc->tris, &ray, &hit, false)) break;
         const __global Triangle* tri = &sc->tris[hit.tri];
         Material m = sc->mats[tri->material];
-        float3 n = normalize(geo_tri_normal(tri));
+        float3 ng = normalize(geo_tri_normal(tri));
         float3 wo = -ray.d;
-        float cos_o = dot(n, wo);
+        float cos_o = dot(ng, wo);
         if (m.emissive && cos_o > 0.0f) {
             float w = 1.0f;
             if (prev_pdf_w > 0.0f)
@@ -140,15 +161,15 @@ PathResult path_trace(const SceneView* sc, SampleSource* src, Ray ray) {
         if (bounce >= sc->depth) break;
         res.bounces = bounce + 1u;
         float3 x = ray.o + ray.d * hit.t;
-        float3 n_wo = cos_o >= 0.0f ? n : -n;
+        ShadingFrame f = frame_make(path_shading_normal(sc, &ray, &hit, ng), ng);
         if (shading_has_nee(&m))
             path_add(&res, bounce + 1u,
-                     beta * path_next_event(sc, src, bounce, x, wo, n_wo, &m, &res.rays));
-        BsdfSample bs = shading_sample(src, bounce, &m, wo, n, n_wo);
+                     beta * path_next_event(sc, src, bounce, x, wo, &f, &m, &res.rays));
+        BsdfSample bs = shading_sample(src, bounce, &m, &f, wo);
         beta *= bs.weight;
         prev_pdf_w = bs.pdf_w;
         if (!(path_max3(beta) > 0.0f) || !path_survives(src, bounce, &beta)) break;
-        ray.o = geo_offset(x, dot(bs.wi, n) >= 0.0f ? n : -n);
+        ray.o = geo_offset(x, dot(bs.wi, ng) >= 0.0f ? ng : -ng);
         ray.d = bs.wi;
         ray.tmax = INFINITY;
     }
@@ -161,11 +182,12 @@ inline bool path_finite(float3 c) {
     return isfinite(c.x) && isfinite(c.y) && isfinite(c.z);
 }
 
-inline SceneView path_scene(const __global Triangle* tris, const __global BvhNode* nodes,
-                            const __global Material* materials, const __global LightEntry* lights,
-                            const Frame* frame) {
+inline SceneView path_scene(const __global Triangle* tris, const __global TriangleNormals* normals,
+                            const __global BvhNode* nodes, const __global Material* materials,
+                            const __global LightEntry* lights, const Frame* frame) {
     SceneView sc;
     sc.tris = tris;
+    sc.normals = normals;
     sc.nodes = nodes;
     sc.mats = materials;
     sc.lights = lights;

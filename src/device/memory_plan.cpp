@@ -25,6 +25,7 @@ void add(MemoryPlan& p, Buffer kind, std::uint64_t bytes) {
 void add_scene(MemoryPlan& p, const DeviceScene& ds) {
     add(p, Buffer::Triangles, vector_bytes(ds.tris));
     add(p, Buffer::Bvh, vector_bytes(ds.nodes));
+    add(p, Buffer::Normals, vector_bytes(ds.normals));
     add(p, Buffer::Materials, vector_bytes(ds.materials));
     add(p, Buffer::Lights, vector_bytes(ds.lights));
 }

@@ -19,6 +19,7 @@ namespace smallmlt {
 // chains have started, but counted as held at once: total() is the peak.
 #define SMALLMLT_BUFFERS(X)                                                                        \
     X(Triangles, "triangles")                                                                      \
+    X(Normals, "normals")                                                                          \
     X(Bvh, "bvh")                                                                                  \
     X(Materials, "materials")                                                                      \
     X(Lights, "lights")                                                                            \

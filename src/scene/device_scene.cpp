@@ -80,6 +80,8 @@ DeviceScene prepare_scene(const Scene& scene) {
     ds.materials = scene.materials;
     SceneFeatures features;
     features.depth = scene.depth;
+    for (const SceneTriangle& st : scene.triangles)
+        features.shading_normals |= st.smooth;
     for (std::uint32_t src : bvh.order) {
         const SceneTriangle& st = scene.triangles[src];
         Triangle t{};
@@ -89,9 +91,18 @@ DeviceScene prepare_scene(const Scene& scene) {
         t.material = st.material;
         t.light_index = LIGHT_NONE;
         ds.tris.push_back(t);
+        if (features.shading_normals) {
+            Vec3 ng = normalize(cross(st.v[1] - st.v[0], st.v[2] - st.v[0]));
+            TriangleNormals tn{};
+            store3(tn.n0, st.smooth ? st.n[0] : ng);
+            store3(tn.n1, st.smooth ? st.n[1] : ng);
+            store3(tn.n2, st.smooth ? st.n[2] : ng);
+            ds.normals.push_back(tn);
+        }
         const Material& m = scene.materials[st.material];
         features.with(m.type);
     }
+    if (ds.normals.empty()) ds.normals.push_back(TriangleNormals{}); // bound, never read
     build_lights(ds);
     features.num_lights = static_cast<std::uint32_t>(ds.lights.size());
     ds.layout = make_layout(features, scene.roulette);

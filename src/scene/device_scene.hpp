@@ -12,6 +12,7 @@ namespace smallmlt {
 
 struct DeviceScene {
     std::vector<Triangle> tris;
+    std::vector<TriangleNormals> normals; // per triangle, or one unused entry
     std::vector<BvhNode> nodes;
     std::vector<Material> materials;
     std::vector<LightEntry> lights;

@@ -18,7 +18,19 @@ struct Camera {
 
 struct SceneTriangle {
     Vec3 v[3];
-    std::uint32_t material;
+    std::uint32_t material = 0;
+    Vec3 n[3];           // shading normals at v[0..2] (unit), when smooth
+    bool smooth = false; // has interpolated normals
+
+    // A flat triangle.
+    static SceneTriangle flat(Vec3 a, Vec3 b, Vec3 c, std::uint32_t material) {
+        SceneTriangle t;
+        t.v[0] = a;
+        t.v[1] = b;
+        t.v[2] = c;
+        t.material = material;
+        return t;
+    }
 };
 
 struct Scene {

@@ -32,8 +32,8 @@ __kernel void probe_light_picks(__global const LightEntry* lights, const uint nu
     out[i] = light_pick(lights, num_lights, u);
 }
 
-/* Directions of bsdf_sample_diffuse around normal n (xyz), with its pdf_w
- * in w. */
+/* Directions of diffuse_sample around normal n (xyz), in the world through
+ * the shading frame of n, with its pdf_w in w. */
 __kernel void probe_diffuse_dirs(const float4 n, const ulong seed, const uint n_samples,
                                  __global float4* out) {
     uint i = get_global_id(0);
@@ -41,25 +41,28 @@ __kernel void probe_diffuse_dirs(const float4 n, const ulong seed, const uint n_
     ulong key = rng_key(seed, i, 0u);
     Material m;
     m.kd[0] = m.kd[1] = m.kd[2] = 0.5f;
-    BsdfSample s =
-        bsdf_sample_diffuse(&m, normalize(n.xyz), probe_unit(key, 0u), probe_unit(key, 1u));
-    out[i] = (float4)(s.wi, s.pdf_w);
+    float3 nn = normalize(n.xyz);
+    ShadingFrame f = frame_make(nn, nn);
+    BsdfSample s = diffuse_sample(&m, (float3)(0.0f, 0.0f, 1.0f), 0.0f, probe_unit(key, 0u),
+                                  probe_unit(key, 1u));
+    out[i] = (float4)(frame_to_world(&f, s.wi), s.pdf_w);
 }
 
-/* Reflections (1) or refractions (0) that bsdf_sample_dielectric chooses
- * for an incoming direction at cosine cos_o to the normal (0, 0, 1), with a
- * choice number of `bits` bits; the weight goes to weights[i]. */
-__kernel void probe_dielectric_choice(const float cos_o, const float ior, const uint bits,
-                                      const ulong seed, const uint n, __global uint* reflected,
+/* Reflections (1) or refractions (0) that dielectric_sample chooses for an
+ * incoming direction at cosine cos_o to the normal (0, 0, 1), with a choice
+ * number of LAYOUT_CHOICE_BITS bits; the weight goes to weights[i]. */
+__kernel void probe_dielectric_choice(const float cos_o, const float ior, const ulong seed,
+                                      const uint n, __global uint* reflected,
                                       __global float* weights) {
     uint i = get_global_id(0);
     if (i >= n) return;
     Material m;
     m.ior = ior;
-    float3 nrm = (float3)(0.0f, 0.0f, 1.0f);
+    m.ks[0] = m.ks[1] = m.ks[2] = 1.0f;
     float3 wo = (float3)(sqrt(fmax(0.0f, 1.0f - cos_o * cos_o)), 0.0f, cos_o);
+    uint bits = LAYOUT_CHOICE_BITS;
     float u = layout_unit(rng_u32(rng_key(seed, i, 0u), 0u) >> (32u - bits), bits);
-    BsdfSample s = bsdf_sample_dielectric(&m, wo, nrm, u, bits);
-    reflected[i] = dot(s.wi, nrm) * cos_o > 0.0f ? 1u : 0u;
+    BsdfSample s = dielectric_sample(&m, wo, u, 0.0f, 0.0f);
+    reflected[i] = s.wi.z * cos_o > 0.0f ? 1u : 0u;
     weights[i] = s.weight.x;
 }
