@@ -2,6 +2,7 @@
 // and is counted (PT and MLT), and a scene whose light is boxed in renders
 // black without dividing by zero.
 #include "render/mlt.hpp"
+#include "scene/material.hpp"
 #include "test_support.hpp"
 
 #include <gtest/gtest.h>
@@ -76,9 +77,8 @@ TEST(Numeric, BoxedInLightRendersBlack) {
         }
     // One emitter that faces away from everything: a tiny triangle far
     // behind the camera, facing away from the scene.
-    Material lamp{};
-    lamp.ke[0] = lamp.ke[1] = lamp.ke[2] = 1.0f;
-    lamp.emissive = 1;
+    Material lamp = diffuse_material({0, 0, 0});
+    set_emission(lamp, {1, 1, 1});
     s.materials.push_back(lamp);
     s.material_names.push_back("lamp");
     std::uint32_t id = std::uint32_t(s.materials.size() - 1);

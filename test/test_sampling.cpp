@@ -5,6 +5,7 @@
 // probability under the density the routine claims, and rejects at
 // significance 1e-3 per test (fixed seeds: a pass is repeatable).
 #include "render/programs.hpp"
+#include "scene/material.hpp"
 #include "stats.hpp"
 #include "test_support.hpp"
 
@@ -35,17 +36,12 @@ DeviceScene five_lights_scene() {
     s.depth = 2;
     s.camera.eye = {0, 1, 3};
     s.camera.target = {0, 0, 0};
-    Material floor{};
-    floor.type = MAT_DIFFUSE;
-    floor.kd[0] = floor.kd[1] = floor.kd[2] = 0.5f;
-    s.materials.push_back(floor);
+    s.materials.push_back(diffuse_material({0.5f, 0.5f, 0.5f}));
     s.triangles.push_back(SceneTriangle::flat({-1, 0, -1}, {-1, 0, 1}, {1, 0, 1}, 0));
     const float ke[5] = {1.0f, 4.0f, 0.5f, 9.0f, 2.0f};
     for (int k = 0; k < 5; ++k) {
-        Material light{};
-        light.type = MAT_DIFFUSE;
-        light.ke[0] = light.ke[1] = light.ke[2] = ke[k];
-        light.emissive = 1;
+        Material light = diffuse_material({0, 0, 0});
+        set_emission(light, {ke[k], ke[k], ke[k]});
         s.materials.push_back(light);
         float x = -1.0f + 0.4f * float(k), size = 0.1f + 0.07f * float(k);
         s.triangles.push_back(SceneTriangle::flat(

@@ -40,6 +40,10 @@ typedef float f32;
 enum { MAT_MODELS(MAT_TYPE_ID) MAT_TYPES };
 #undef MAT_TYPE_ID
 
+/* The least alpha of a rough model (below it a material is smooth; a rough
+ * texel is clamped to it). */
+#define MAT_MIN_ROUGH_ALPHA 1e-3f
+
 /* Material.flags: MAT_FLAG_BECKMANN, the microfacet distribution is
  * Beckmann's (else GGX); MAT_FLAG_TWO_SIDED, an opaque model reflects on both
  * sides (else its back is black). */
@@ -97,8 +101,12 @@ typedef struct {
  * - fdr_int: plastic: the coat's hemispherical reflectance from inside
  *   (the host integrates it, src/scene/material.cpp);
  * - spec_weight: plastic: the share of its lobe choice given to the coat
- *   before Fresnel, lum(ks) / (lum(ks) + lum(kd)).
- * 88 bytes. */
+ *   before Fresnel, lum(ks) / (lum(ks) + lum(kd)) of the constant colours
+ *   (a texture does not change it: it steers sampling only);
+ * - kd_tex, ks_tex, rough_tex, alpha_tex: textures (TextureInfo index, or
+ *   TEX_NONE) that replace kd, ks, the roughness (alpha = texel^2) and
+ *   give the cut-out (a texel below 1/2 is a hole), at the hit's (u, v).
+ * 104 bytes. */
 typedef struct {
     f32 kd[3];
     u32 type;
@@ -112,7 +120,34 @@ typedef struct {
     u32 flags;
     f32 fdr_int;
     f32 spec_weight;
+    u32 kd_tex;
+    u32 ks_tex;
+    u32 rough_tex;
+    u32 alpha_tex;
 } Material;
+
+#define TEX_NONE 0xFFFFFFFFu
+
+/* A texture in the texel buffer: width x height texels from texel `first`,
+ * row-major from the top row (v = 1), each 8-bit RGBA with R in the low
+ * byte; srgb 1: colour values, sRGB-encoded and decoded at lookup (else
+ * linear data). 16 bytes. */
+typedef struct {
+    u32 first;
+    u32 width;
+    u32 height;
+    u32 srgb;
+} TextureInfo;
+
+typedef u32 Texel;
+
+/* The texture coordinates of a triangle at v0, v1, v2, for scenes with
+ * textures (a one-element buffer otherwise). 24 bytes. */
+typedef struct {
+    f32 uv0[2];
+    f32 uv1[2];
+    f32 uv2[2];
+} TriangleUVs;
 
 /* An emissive triangle for next-event estimation. The triangle is picked when
  * the light-pick number u (an integer in [0, 2^bits)) satisfies
@@ -217,10 +252,13 @@ typedef struct {
         F(Triangle, light_pick_prob, 28) F(Triangle, e2, 32) F(Triangle, light_index, 44)          \
     S(TriangleNormals, 36) F(TriangleNormals, n1, 12) F(TriangleNormals, n2, 24)                 \
     S(BvhNode, 32) F(BvhNode, offset, 12) F(BvhNode, hi, 16) F(BvhNode, count, 28)                 \
-    S(Material, 88) F(Material, type, 12) F(Material, ke, 16) F(Material, ior, 28)                 \
+    S(Material, 104) F(Material, type, 12) F(Material, ke, 16) F(Material, ior, 28)                 \
         F(Material, ks, 32) F(Material, emissive, 44) F(Material, eta, 48)                         \
         F(Material, alpha, 60) F(Material, k, 64) F(Material, flags, 76)                           \
-        F(Material, fdr_int, 80) F(Material, spec_weight, 84)                                      \
+        F(Material, fdr_int, 80) F(Material, spec_weight, 84) F(Material, kd_tex, 88)              \
+        F(Material, ks_tex, 92) F(Material, rough_tex, 96) F(Material, alpha_tex, 100)             \
+    S(TextureInfo, 16) F(TextureInfo, width, 4) F(TextureInfo, height, 8) F(TextureInfo, srgb, 12) \
+    S(TriangleUVs, 24) F(TriangleUVs, uv1, 8) F(TriangleUVs, uv2, 16)                              \
     S(LightEntry, 8) F(LightEntry, cdf_hi, 4)                                                      \
     S(Frame, 64) F(Frame, width, 12) F(Frame, top_left, 16) F(Frame, height, 28)                   \
         F(Frame, du, 32) F(Frame, depth, 44) F(Frame, dv, 48) F(Frame, num_lights, 60)             \
@@ -244,7 +282,9 @@ typedef struct {
  * one MltFilm (src/render/mlt_film.hpp). */
 #define SCENE_BUFFERS(X)                                                                           \
     X(Triangle, tris)                                                                              \
-    X(TriangleNormals, normals) X(BvhNode, nodes) X(Material, materials) X(LightEntry, lights)
+    X(TriangleNormals, normals)                                                                    \
+    X(TriangleUVs, uvs) X(BvhNode, nodes) X(Material, materials) X(LightEntry, lights)             \
+        X(TextureInfo, textures) X(Texel, texels)
 #define FILM_BANDS(X) X(FilmWord, band0) X(FilmWord, band1) X(FilmWord, band2) X(FilmWord, band3)
 #define FILM64_FRAC_BITS 24
 

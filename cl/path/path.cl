@@ -17,9 +17,16 @@
 #define PATH_SPLIT 0
 #endif
 
+/* Holes of cut-outs a ray may pass through before it counts as blocked
+ * (bounded, so that no loop runs forever). */
+#define PATH_MAX_HOLES 16u
+
 typedef struct {
     const __global Triangle* tris;
     const __global TriangleNormals* normals;
+    const __global TriangleUVs* uvs;
+    const __global TextureInfo* textures;
+    const __global Texel* texels;
     const __global BvhNode* nodes;
     const __global Material* mats;
     const __global LightEntry* lights;
@@ -40,6 +47,98 @@ inline float3 path_rgb(const f32 c[3]) {
 
 inline float path_max3(float3 v) {
     return fmax(v.x, fmax(v.y, v.z));
+}
+
+/* The hit's barycentrics, where shading normals or textures need them. */
+inline float2 path_barycentrics(const SceneView* sc, const Ray* ray, const Hit* hit) {
+#if LAYOUT_HAS_SHADING_NORMALS || LAYOUT_HAS_TEXTURES
+    return geo_barycentrics(ray, &sc->tris[hit->tri]);
+#else
+    (void)sc;
+    (void)ray;
+    (void)hit;
+    return (float2)(0.0f);
+#endif
+}
+
+/* The shading normal at barycentrics b of triangle `tri`: its vertex
+ * normals interpolated, turned to the geometric normal ng's side; ng itself
+ * where the scene has no vertex normals. */
+inline float3 path_shading_normal(const SceneView* sc, uint tri, float2 b, float3 ng) {
+#if LAYOUT_HAS_SHADING_NORMALS
+    const __global TriangleNormals* tn = &sc->normals[tri];
+    float3 n =
+        geo_load3(tn->n0) * (1.0f - b.x - b.y) + geo_load3(tn->n1) * b.x + geo_load3(tn->n2) * b.y;
+    float l = length(n);
+    if (!(l > 0.0f)) return ng;
+    n /= l;
+    return dot(n, ng) < 0.0f ? -n : n;
+#else
+    (void)sc;
+    (void)tri;
+    (void)b;
+    return ng;
+#endif
+}
+
+/* Texture coordinates at barycentrics b of triangle `tri`. */
+inline float2 path_uv(const SceneView* sc, uint tri, float2 b) {
+#if LAYOUT_HAS_TEXTURES
+    const __global TriangleUVs* t = &sc->uvs[tri];
+    return (float2)(t->uv0[0], t->uv0[1]) * (1.0f - b.x - b.y) +
+           (float2)(t->uv1[0], t->uv1[1]) * b.x + (float2)(t->uv2[0], t->uv2[1]) * b.y;
+#else
+    (void)sc;
+    (void)tri;
+    (void)b;
+    return (float2)(0.0f);
+#endif
+}
+
+/* What the hit sees: its material with its textures applied and its shading
+ * frame. False where the hit falls in a hole of a cut-out: the ray passes. */
+inline bool path_surface(const SceneView* sc, const Ray* ray, const Hit* hit, Material* m,
+                         ShadingFrame* f) {
+    const __global Triangle* tri = &sc->tris[hit->tri];
+    *m = sc->mats[tri->material];
+    float3 ng = normalize(geo_tri_normal(tri));
+    float2 b = path_barycentrics(sc, ray, hit);
+#if LAYOUT_HAS_TEXTURES
+    float2 uv = path_uv(sc, hit->tri, b);
+    f->ng = ng;
+    if (tex_is_hole(m, sc->textures, sc->texels, uv)) return false;
+    tex_apply(m, sc->textures, sc->texels, uv);
+#endif
+    *f = frame_make(path_shading_normal(sc, hit->tri, b, ng), ng);
+    return true;
+}
+
+/* The ray continued past the point it reached at distance t, on its way. */
+inline void path_pass(Ray* ray, float t, float3 ng) {
+    float3 x = ray->o + ray->d * t;
+    float3 o = geo_offset(x, dot(ray->d, ng) >= 0.0f ? ng : -ng);
+    if (ray->tmax < INFINITY) ray->tmax = fmax(ray->tmax - length(o - ray->o), 0.0f);
+    ray->o = o;
+}
+
+/* Whether nothing blocks the shadow ray: with cut-outs, a hole lets it
+ * through (at most PATH_MAX_HOLES of them). */
+inline bool path_unoccluded(const SceneView* sc, Ray shadow, uint* rays) {
+    Hit h;
+#if LAYOUT_HAS_CUTOUTS
+    for (uint i = 0; i <= PATH_MAX_HOLES; ++i) {
+        ++*rays;
+        if (!bvh_trace(sc->nodes, sc->tris, &shadow, &h, false)) return true;
+        Material m;
+        ShadingFrame f;
+        if (path_surface(sc, &shadow, &h, &m, &f)) return false;
+        path_pass(&shadow, h.t, normalize(geo_tri_normal(&sc->tris[h.tri])));
+    }
+    return false;
+#else
+    ++*rays;
+    return !bvh_trace(sc->nodes, sc->tris, &shadow, &h, true);
+#endif
 }
 
 /* Direct light at vertex x seen from wo, at material m of shading frame f. */
@@ -63,9 +162,7 @@ float3 path_next_event(const SceneView* sc, SampleSource* src, uint bounce, floa
     shadow.o = geo_offset(x, dot(ls.wi, f->ng) >= 0.0f ? f->ng : -f->ng);
     shadow.d = ls.wi;
     shadow.tmax = length(x + ls.wi * ls.dist - shadow.o) * (1.0f - 1e-4f);
-    Hit h;
-    ++*rays;
-    if (bvh_trace(sc->nodes, sc->tris, &shadow, &h, true)) return (float3)(0.0f);
+    if (!path_unoccluded(sc, shadow, rays)) return (float3)(0.0f);
     float w = light_power_heuristic(ls.pdf_w, e.pdf_w);
     return ls.radiance * e.f_cos * (w / ls.pdf_w);
 #else
@@ -113,27 +210,6 @@ inline float3 path_radiance(const PathResult* r) {
     return r->omc + r->rest;
 }
 
-/* The shading normal at a hit: the triangle's vertex normals interpolated
- * by the hit's barycentrics, turned to the geometric normal ng's side;
- * ng itself where the scene has no vertex normals. */
-inline float3 path_shading_normal(const SceneView* sc, const Ray* ray, const Hit* hit, float3 ng) {
-#if LAYOUT_HAS_SHADING_NORMALS
-    const __global TriangleNormals* tn = &sc->normals[hit->tri];
-    float2 b = geo_barycentrics(ray, &sc->tris[hit->tri]);
-    float3 n =
-        geo_load3(tn->n0) * (1.0f - b.x - b.y) + geo_load3(tn->n1) * b.x + geo_load3(tn->n2) * b.y;
-    float l = length(n);
-    if (!(l > 0.0f)) return ng;
-    n /= l;
-    return dot(n, ng) < 0.0f ? -n : n;
-#else
-    (void)sc;
-    (void)ray;
-    (void)hit;
-    return ng;
-#endif
-}
-
 /* Radiance carried to the camera along `ray` by the path that src defines. */
 PathResult path_trace(const SceneView* sc, SampleSource* src, Ray ray) {
     PathResult res;
@@ -143,15 +219,21 @@ PathResult path_trace(const SceneView* sc, SampleSource* src, Ray ray) {
     res.bounces = 0;
     float3 beta = (float3)(1.0f);
     float prev_pdf_w = 0.0f; /* 0: previous vertex was specular or the camera */
-    for (uint bounce = 0;; ++bounce) {
+    uint bounce = 0, holes = 0;
+    for (;;) {
         Hit hit;
         ++res.rays;
         if (!bvh_trace(sc->nodes, sc->tris, &ray, &hit, false)) break;
         const __global Triangle* tri = &sc->tris[hit.tri];
-        Material m = sc->mats[tri->material];
-        float3 ng = normalize(geo_tri_normal(tri));
+        Material m;
+        ShadingFrame f;
+        if (!path_surface(sc, &ray, &hit, &m, &f)) {
+            if (++holes > PATH_MAX_HOLES) break;
+            path_pass(&ray, hit.t, f.ng);
+            continue;
+        }
         float3 wo = -ray.d;
-        float cos_o = dot(ng, wo);
+        float cos_o = dot(f.ng, wo);
         if (m.emissive && cos_o > 0.0f) {
             float w = 1.0f;
             if (prev_pdf_w > 0.0f)
@@ -161,7 +243,6 @@ PathResult path_trace(const SceneView* sc, SampleSource* src, Ray ray) {
         if (bounce >= sc->depth) break;
         res.bounces = bounce + 1u;
         float3 x = ray.o + ray.d * hit.t;
-        ShadingFrame f = frame_make(path_shading_normal(sc, &ray, &hit, ng), ng);
         if (shading_has_nee(&m))
             path_add(&res, bounce + 1u,
                      beta * path_next_event(sc, src, bounce, x, wo, &f, &m, &res.rays));
@@ -169,9 +250,10 @@ PathResult path_trace(const SceneView* sc, SampleSource* src, Ray ray) {
         beta *= bs.weight;
         prev_pdf_w = bs.pdf_w;
         if (!(path_max3(beta) > 0.0f) || !path_survives(src, bounce, &beta)) break;
-        ray.o = geo_offset(x, dot(bs.wi, ng) >= 0.0f ? ng : -ng);
+        ray.o = geo_offset(x, dot(bs.wi, f.ng) >= 0.0f ? f.ng : -f.ng);
         ray.d = bs.wi;
         ray.tmax = INFINITY;
+        ++bounce;
     }
     return res;
 }
@@ -183,14 +265,19 @@ inline bool path_finite(float3 c) {
 }
 
 inline SceneView path_scene(const __global Triangle* tris, const __global TriangleNormals* normals,
-                            const __global BvhNode* nodes, const __global Material* materials,
-                            const __global LightEntry* lights, const Frame* frame) {
+                            const __global TriangleUVs* uvs, const __global BvhNode* nodes,
+                            const __global Material* materials, const __global LightEntry* lights,
+                            const __global TextureInfo* textures, const __global Texel* texels,
+                            const Frame* frame) {
     SceneView sc;
     sc.tris = tris;
     sc.normals = normals;
+    sc.uvs = uvs;
     sc.nodes = nodes;
     sc.mats = materials;
     sc.lights = lights;
+    sc.textures = textures;
+    sc.texels = texels;
     sc.num_lights = frame->num_lights;
     sc.depth = frame->depth;
     return sc;

@@ -26,6 +26,9 @@ void add_scene(MemoryPlan& p, const DeviceScene& ds) {
     add(p, Buffer::Triangles, vector_bytes(ds.tris));
     add(p, Buffer::Bvh, vector_bytes(ds.nodes));
     add(p, Buffer::Normals, vector_bytes(ds.normals));
+    add(p, Buffer::Uvs, vector_bytes(ds.uvs));
+    add(p, Buffer::Textures, vector_bytes(ds.textures));
+    add(p, Buffer::Texels, vector_bytes(ds.texels));
     add(p, Buffer::Materials, vector_bytes(ds.materials));
     add(p, Buffer::Lights, vector_bytes(ds.lights));
 }

@@ -20,6 +20,9 @@ namespace smallmlt {
 #define SMALLMLT_BUFFERS(X)                                                                        \
     X(Triangles, "triangles")                                                                      \
     X(Normals, "normals")                                                                          \
+    X(Uvs, "texture coordinates")                                                                  \
+    X(Textures, "texture table")                                                                   \
+    X(Texels, "texels")                                                                            \
     X(Bvh, "bvh")                                                                                  \
     X(Materials, "materials")                                                                      \
     X(Lights, "lights")                                                                            \

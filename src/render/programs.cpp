@@ -30,6 +30,7 @@ const Row kTable[] = {
     {Stage::Sampling, "cl/sampling/burnin_film.cl",        false, true},
     {Stage::Sampling, "cl/sampling/numbers.cl",            true,  true},
     {Stage::Shading,  "cl/shading/frame.cl",               true,  true},
+    {Stage::Shading,  "cl/shading/texture.cl",             true,  true},
     {Stage::Shading,  "cl/shading/bsdf.cl",                true,  true},
     {Stage::Shading,  "cl/shading/fresnel.cl",             true,  true},
     {Stage::Shading,  "cl/shading/microfacet.cl",          true,  true},

@@ -82,6 +82,11 @@ DeviceScene prepare_scene(const Scene& scene) {
     features.depth = scene.depth;
     for (const SceneTriangle& st : scene.triangles)
         features.shading_normals |= st.smooth;
+    for (const Material& m : scene.materials) {
+        features.textures |= m.kd_tex != TEX_NONE || m.ks_tex != TEX_NONE ||
+                             m.rough_tex != TEX_NONE || m.alpha_tex != TEX_NONE;
+        features.cutouts |= m.alpha_tex != TEX_NONE;
+    }
     for (std::uint32_t src : bvh.order) {
         const SceneTriangle& st = scene.triangles[src];
         Triangle t{};
@@ -99,10 +104,33 @@ DeviceScene prepare_scene(const Scene& scene) {
             store3(tn.n2, st.smooth ? st.n[2] : ng);
             ds.normals.push_back(tn);
         }
+        if (features.textures) {
+            TriangleUVs uv{};
+            for (int c = 0; c < 2; ++c) {
+                uv.uv0[c] = st.uv[0][c];
+                uv.uv1[c] = st.uv[1][c];
+                uv.uv2[c] = st.uv[2][c];
+            }
+            ds.uvs.push_back(uv);
+        }
         const Material& m = scene.materials[st.material];
         features.with(m.type);
     }
-    if (ds.normals.empty()) ds.normals.push_back(TriangleNormals{}); // bound, never read
+    for (const SceneTexture& t : scene.textures) {
+        TextureInfo info{};
+        info.first = static_cast<u32>(ds.texels.size());
+        info.width = static_cast<u32>(t.width);
+        info.height = static_cast<u32>(t.height);
+        info.srgb = t.kind == TextureKind::Colour ? 1u : 0u;
+        ds.textures.push_back(info);
+        ds.texture_files.push_back(t.file);
+        ds.texels.insert(ds.texels.end(), t.texels.begin(), t.texels.end());
+    }
+    // Buffers a scene does not use are bound with one entry, never read.
+    if (ds.normals.empty()) ds.normals.push_back(TriangleNormals{});
+    if (ds.uvs.empty()) ds.uvs.push_back(TriangleUVs{});
+    if (ds.textures.empty()) ds.textures.push_back(TextureInfo{});
+    if (ds.texels.empty()) ds.texels.push_back(0);
     build_lights(ds);
     features.num_lights = static_cast<std::uint32_t>(ds.lights.size());
     ds.layout = make_layout(features, scene.roulette);

@@ -12,7 +12,11 @@ namespace smallmlt {
 
 struct DeviceScene {
     std::vector<Triangle> tris;
-    std::vector<TriangleNormals> normals; // per triangle, or one unused entry
+    std::vector<TriangleNormals> normals;   // per triangle, or one unused entry
+    std::vector<TriangleUVs> uvs;           // per triangle, or one unused entry
+    std::vector<TextureInfo> textures;      // or one unused entry
+    std::vector<Texel> texels;              // all textures' texels, or one unused
+    std::vector<std::string> texture_files; // of each TextureInfo, for `budget`
     std::vector<BvhNode> nodes;
     std::vector<Material> materials;
     std::vector<LightEntry> lights;

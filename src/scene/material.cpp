@@ -19,6 +19,7 @@ Material base(u32 type) {
     m.type = type;
     m.ior = 1.0f;
     m.flags = MAT_FLAG_TWO_SIDED;
+    m.kd_tex = m.ks_tex = m.rough_tex = m.alpha_tex = TEX_NONE;
     return m;
 }
 

@@ -11,7 +11,7 @@ namespace smallmlt {
 // A microfacet alpha below this is read as a smooth surface: the smooth
 // model renders it (its lobe is narrower than one pixel's blur at any
 // distance the scenes use, and a GGX lobe that narrow loses float precision).
-constexpr float kSmoothAlpha = 1e-3f;
+constexpr float kSmoothAlpha = MAT_MIN_ROUGH_ALPHA;
 
 enum class Microfacet { Ggx, Beckmann };
 

@@ -73,6 +73,8 @@ std::string SampleLayout::defines() const {
     MAT_MODELS(SMALLMLT_MODEL_DEFINE)
 #undef SMALLMLT_MODEL_DEFINE
     d << "#define LAYOUT_HAS_SHADING_NORMALS " << (features.shading_normals ? 1 : 0) << "\n";
+    d << "#define LAYOUT_HAS_TEXTURES " << (features.textures ? 1 : 0) << "\n";
+    d << "#define LAYOUT_HAS_CUTOUTS " << (features.cutouts ? 1 : 0) << "\n";
     d << "#define LAYOUT_CHOICE_BITS " << kLowBits << "u\n";
     d << "#define LAYOUT_HAS_NEE " << (has(kLightU) ? 1 : 0) << "\n";
     d << "#define LAYOUT_CAMERA_BITS " << kHighBits << "u\n";

@@ -15,6 +15,8 @@ struct SceneFeatures {
     std::uint32_t num_lights = 0; // emissive triangles
     int depth = 0;
     bool shading_normals = false; // some triangle has interpolated normals
+    bool textures = false;        // some material has a texture
+    bool cutouts = false;         // some material has a cut-out texture
 
     bool has(std::uint32_t type) const { return (models >> type & 1u) != 0; }
     SceneFeatures& with(std::uint32_t type) {

@@ -3,6 +3,7 @@
 #pragma once
 #include "base/vec3.hpp"
 #include "scene/sample_layout.hpp"
+#include "scene/texture.hpp"
 #include "shared_types.h"
 
 #include <set>
@@ -21,6 +22,7 @@ struct SceneTriangle {
     std::uint32_t material = 0;
     Vec3 n[3];           // shading normals at v[0..2] (unit), when smooth
     bool smooth = false; // has interpolated normals
+    float uv[3][2] = {}; // texture coordinates at v[0..2] (0 where the mesh has none)
 
     // A flat triangle.
     static SceneTriangle flat(Vec3 a, Vec3 b, Vec3 c, std::uint32_t material) {
@@ -41,8 +43,9 @@ struct Scene {
     std::vector<SceneTriangle> triangles;
     std::vector<Material> materials;
     std::vector<std::string> material_names;
-    std::set<std::string> mtl_files; // MTL files read so far (meshes may share one)
-    int dropped_degenerate = 0;      // zero-area triangles left out at load
+    std::vector<SceneTexture> textures; // Material.*_tex index into it
+    std::set<std::string> mtl_files;    // MTL files read so far (meshes may share one)
+    int dropped_degenerate = 0;         // zero-area triangles left out at load
 };
 
 constexpr int kMaxDepth = 64;

@@ -1,0 +1,155 @@
+// Textures: sRGB decoding, bilinear lookup with wrap, the cut-out, halving
+// and the fit to memory (src/scene/texture.cpp, cl/shading/texture.cl).
+#include "device/scene_buffers.hpp"
+#include "render/programs.hpp"
+#include "scene/texture.hpp"
+#include "test_support.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+using namespace smallmlt;
+
+namespace {
+
+std::uint32_t rgba(int r, int g, int b, int a) {
+    return std::uint32_t(r) | std::uint32_t(g) << 8 | std::uint32_t(b) << 16 |
+           std::uint32_t(a) << 24;
+}
+
+SceneTexture texture(int w, int h, TextureKind kind, std::vector<std::uint32_t> texels) {
+    SceneTexture t;
+    t.file = "test";
+    t.kind = kind;
+    t.width = w;
+    t.height = h;
+    t.texels = std::move(texels);
+    return t;
+}
+
+struct Lookup {
+    std::vector<cl_float4> rgba;
+    std::vector<cl_uint> hole;
+};
+
+// Looks texture 0 of `ds` up at `uv` on the device.
+Lookup device_lookup(const DeviceScene& ds, const std::vector<cl_float2>& uv) {
+    ClProgram prog(test::cl().build(
+        program_files(
+            {Program::PathTracer, "cl/sampling/sample_omc.cl", "", {"test/cl/probe_texture.cl"}},
+            Stage::Shading),
+        ds.layout.defines()));
+    const cl_uint n = cl_uint(uv.size());
+    ClBuffer infos = upload(test::cl(), ds.textures), texels = upload(test::cl(), ds.texels);
+    ClBuffer uvb(test::cl(), CL_MEM_READ_ONLY, n * sizeof(cl_float2), uv.data());
+    ClBuffer out(test::cl(), CL_MEM_WRITE_ONLY, n * sizeof(cl_float4));
+    ClBuffer hole(test::cl(), CL_MEM_WRITE_ONLY, n * sizeof(cl_uint));
+    ClKernel k(prog.p, "probe_tex_lookup");
+    k.set_args(infos, texels, cl_uint(0), uvb, n, out, hole);
+    k.run(test::cl(), n);
+    Lookup l{std::vector<cl_float4>(n), std::vector<cl_uint>(n)};
+    out.read(test::cl(), l.rgba.data());
+    hole.read(test::cl(), l.hole.data());
+    return l;
+}
+
+DeviceScene scene_with(const SceneTexture& t) {
+    Scene s = test::scene("furnace", 4, 4, 1);
+    s.textures.push_back(t);
+    return prepare_scene(s);
+}
+
+} // namespace
+
+// The sRGB transfer function of IEC 61966-2-1 at known points, and its
+// inverse.
+TEST(Texture, SrgbDecodesByTheStandardCurve) {
+    EXPECT_NEAR(srgb_to_linear(0.0), 0.0, 1e-15);
+    EXPECT_NEAR(srgb_to_linear(1.0), 1.0, 1e-12);
+    EXPECT_NEAR(srgb_to_linear(0.04045), 0.04045 / 12.92, 1e-12); // the linear segment's end
+    EXPECT_NEAR(srgb_to_linear(0.5), 0.21404114048223255, 1e-12);
+    EXPECT_NEAR(srgb_to_linear(188 / 255.0), 0.5028864580325687, 1e-12);
+    for (double c : {0.001, 0.02, 0.3, 0.77})
+        EXPECT_NEAR(linear_to_srgb(srgb_to_linear(c)), c, 1e-12);
+}
+
+// A 2x2 colour texture: at texel centres a lookup returns the texel,
+// decoded from sRGB; between centres it is the bilinear mix of the decoded
+// values; past an edge it wraps to the opposite side. A data texture is
+// not decoded.
+TEST(Texture, LookupIsBilinearWithWrapInLinearLight) {
+    const std::uint32_t a = rgba(255, 0, 0, 255), b = rgba(0, 188, 0, 255),
+                        c = rgba(0, 0, 128, 255), d = rgba(64, 64, 64, 0);
+    SceneTexture t = texture(2, 2, TextureKind::Colour, {a, b, c, d}); // top row a b
+    DeviceScene ds = scene_with(t);
+    ASSERT_TRUE(ds.layout.features.textures == false); // no material uses it
+    const double l188 = srgb_to_linear(188 / 255.0), l128 = srgb_to_linear(128 / 255.0),
+                 l64 = srgb_to_linear(64 / 255.0);
+    std::vector<cl_float2> uv = {{{0.25f, 0.75f}}, // centre of a (top left)
+                                 {{0.75f, 0.75f}}, // b
+                                 {{0.25f, 0.25f}}, // c
+                                 {{0.5f, 0.75f}},  // between a and b
+                                 {{0.5f, 0.5f}},   // the middle of all four
+                                 {{1.0f, 0.75f}},  // between b and a, across the right edge
+                                 {{1.25f, -0.25f}}};
+    struct Want {
+        double r, g, b, a;
+    };
+    const Want want[] = {{1, 0, 0, 1},
+                         {0, l188, 0, 1},
+                         {0, 0, l128, 1},
+                         {0.5, 0.5 * l188, 0, 1},
+                         {0.25 * (1 + l64), 0.25 * (l188 + l64), 0.25 * (l128 + l64), 0.75},
+                         {0.5, 0.5 * l188, 0, 1},
+                         {1, 0, 0, 1}}; // wraps to a's centre
+    Lookup l = device_lookup(ds, uv);
+    for (std::size_t i = 0; i < uv.size(); ++i) {
+        EXPECT_NEAR(l.rgba[i].s[0], want[i].r, 2e-6) << "lookup " << i;
+        EXPECT_NEAR(l.rgba[i].s[1], want[i].g, 2e-6) << "lookup " << i;
+        EXPECT_NEAR(l.rgba[i].s[2], want[i].b, 2e-6) << "lookup " << i;
+        EXPECT_NEAR(l.rgba[i].s[3], want[i].a, 2e-6) << "lookup " << i;
+    }
+    SceneTexture data = texture(1, 1, TextureKind::Data, {rgba(128, 0, 0, 255)});
+    EXPECT_NEAR(device_lookup(scene_with(data), {{{0.3f, 0.6f}}}).rgba[0].s[0], 128 / 255.0, 1e-6)
+        << "a data texture is linear";
+}
+
+// A cut-out mask: a hole where the filtered alpha is below 1/2.
+TEST(Texture, CutOutHasHolesWhereAlphaIsBelowAHalf) {
+    SceneTexture t = texture(2, 1, TextureKind::Mask, {rgba(0, 0, 0, 0), rgba(0, 0, 0, 255)});
+    DeviceScene ds = scene_with(t);
+    Lookup l =
+        device_lookup(ds, {{{0.25f, 0.5f}}, {{0.75f, 0.5f}}, {{0.45f, 0.5f}}, {{0.55f, 0.5f}}});
+    EXPECT_EQ(l.hole, (std::vector<cl_uint>{1, 0, 1, 0}));
+}
+
+// Halving averages 2x2 texels in linear light (a black and a white texel
+// make sRGB 188, not 128), data textures in their own values; fit_textures
+// halves the largest texture first until the total fits, and caps sides.
+TEST(Texture, HalvingAveragesInLinearLightAndFitsTheLargestFirst) {
+    SceneTexture t = texture(2, 2, TextureKind::Colour,
+                             {rgba(0, 0, 0, 255), rgba(255, 255, 255, 255), rgba(0, 0, 0, 255),
+                              rgba(255, 255, 255, 255)});
+    SceneTexture d = t;
+    d.kind = TextureKind::Data;
+    halve(t);
+    halve(d);
+    ASSERT_EQ(t.width, 1);
+    ASSERT_EQ(t.height, 1);
+    EXPECT_EQ(t.texels[0] & 0xFFu, 188u) << "linear mean 0.5 is sRGB 188";
+    EXPECT_EQ(d.texels[0] & 0xFFu, 128u);
+    EXPECT_EQ(t.texels[0] >> 24, 255u);
+
+    std::vector<SceneTexture> set = {
+        texture(64, 64, TextureKind::Colour, std::vector<std::uint32_t>(64 * 64, 0)),
+        texture(16, 16, TextureKind::Colour, std::vector<std::uint32_t>(16 * 16, 0))};
+    // 16 KiB + 1 KiB; at most 6 KiB: the large one halves to 32x32 (4 KiB).
+    EXPECT_EQ(fit_textures(set, 6 * 1024, 0), 1);
+    EXPECT_EQ(set[0].width, 32);
+    EXPECT_EQ(set[1].width, 16);
+    EXPECT_EQ(set[0].halvings, 1);
+    EXPECT_EQ(fit_textures(set, 1u << 20, 8), 3); // 32 -> 16 -> 8, and 16 -> 8
+    EXPECT_EQ(set[0].width, 8);
+    EXPECT_EQ(set[1].width, 8);
+}
