@@ -2,6 +2,7 @@
 // and the fit to memory (src/scene/texture.cpp, cl/shading/texture.cl).
 #include "device/scene_buffers.hpp"
 #include "render/programs.hpp"
+#include "scene/material.hpp"
 #include "scene/texture.hpp"
 #include "test_support.hpp"
 
@@ -124,21 +125,23 @@ TEST(Texture, CutOutHasHolesWhereAlphaIsBelowAHalf) {
     EXPECT_EQ(l.hole, (std::vector<cl_uint>{1, 0, 1, 0}));
 }
 
-// Halving averages 2x2 texels in linear light (a black and a white texel
-// make sRGB 188, not 128), data textures in their own values; fit_textures
+// Halving averages 2x2 texels in linear light (black and sRGB 128 make
+// sRGB 92, not 64), data textures in their own values; fit_textures
 // halves the largest texture first until the total fits, and caps sides.
 TEST(Texture, HalvingAveragesInLinearLightAndFitsTheLargestFirst) {
     SceneTexture t = texture(2, 2, TextureKind::Colour,
-                             {rgba(0, 0, 0, 255), rgba(255, 255, 255, 255), rgba(0, 0, 0, 255),
-                              rgba(255, 255, 255, 255)});
+                             {rgba(0, 0, 0, 255), rgba(128, 128, 128, 255), rgba(0, 0, 0, 255),
+                              rgba(128, 128, 128, 255)});
     SceneTexture d = t;
     d.kind = TextureKind::Data;
     halve(t);
     halve(d);
     ASSERT_EQ(t.width, 1);
     ASSERT_EQ(t.height, 1);
-    EXPECT_EQ(t.texels[0] & 0xFFu, 188u) << "linear mean 0.5 is sRGB 188";
-    EXPECT_EQ(d.texels[0] & 0xFFu, 128u);
+    // Linear light: (0 + 0.2158) / 2 = 0.1079 is sRGB 92.4; the mean of the
+    // encoded values would be 64.
+    EXPECT_EQ(t.texels[0] & 0xFFu, 92u);
+    EXPECT_EQ(d.texels[0] & 0xFFu, 64u);
     EXPECT_EQ(t.texels[0] >> 24, 255u);
 
     std::vector<SceneTexture> set = {
@@ -152,4 +155,82 @@ TEST(Texture, HalvingAveragesInLinearLightAndFitsTheLargestFirst) {
     EXPECT_EQ(fit_textures(set, 1u << 20, 8), 3); // 32 -> 16 -> 8, and 16 -> 8
     EXPECT_EQ(set[0].width, 8);
     EXPECT_EQ(set[1].width, 8);
+}
+
+namespace {
+
+// A floor under a lamp, seen from below a large plane between them whose
+// cut-out mask is `mask` (nothing between them without one).
+Scene screened_floor(const SceneTexture* mask) {
+    Scene s;
+    s.width = s.height = 16;
+    s.depth = 3;
+    s.camera.eye = {0, 0.8f, 2.5f};
+    s.camera.target = {0, 0, 0};
+    s.camera.fov_y_deg = 50;
+    s.materials.push_back(diffuse_material({0.7f, 0.7f, 0.7f}));
+    Material lamp = diffuse_material({0, 0, 0});
+    set_emission(lamp, {5, 5, 5});
+    s.materials.push_back(lamp);
+    Material screen = diffuse_material({0.5f, 0.5f, 0.5f});
+    s.materials.push_back(screen);
+    s.material_names = {"floor", "lamp", "screen"};
+    auto quad = [&](float y, float half, std::uint32_t mat, bool down) {
+        Vec3 a{-half, y, -half}, b{half, y, -half}, c{half, y, half}, d{-half, y, half};
+        SceneTriangle t1 =
+            down ? SceneTriangle::flat(a, b, c, mat) : SceneTriangle::flat(a, c, b, mat);
+        SceneTriangle t2 =
+            down ? SceneTriangle::flat(a, c, d, mat) : SceneTriangle::flat(a, d, c, mat);
+        const float uv_a[2] = {0, 0}, uv_b[2] = {1, 0}, uv_c[2] = {1, 1}, uv_d[2] = {0, 1};
+        auto set = [](SceneTriangle& t, const float* p, const float* q, const float* r) {
+            for (int k = 0; k < 2; ++k)
+                t.uv[0][k] = p[k], t.uv[1][k] = q[k], t.uv[2][k] = r[k];
+        };
+        if (down) {
+            set(t1, uv_a, uv_b, uv_c);
+            set(t2, uv_a, uv_c, uv_d);
+        } else {
+            set(t1, uv_a, uv_c, uv_b);
+            set(t2, uv_a, uv_d, uv_c);
+        }
+        s.triangles.push_back(t1);
+        s.triangles.push_back(t2);
+    };
+    quad(0, 3, 0, false);   // the floor, facing up
+    quad(3, 0.5f, 1, true); // the lamp, facing down
+    if (mask) {
+        s.textures.push_back(*mask);
+        s.materials[2].alpha_tex = 0;
+        quad(1.5f, 20, 2, true);
+    }
+    return s;
+}
+
+double floor_mean(const SceneTexture* mask) {
+    return test::render_pt(prepare_scene(screened_floor(mask)), 9, 64).mean_luminance();
+}
+
+} // namespace
+
+// A screen between a lamp and the floor: with a cut-out mask of alpha 0 the
+// floor is lit as without it (within 1%: the same samples, the rays pushed
+// on past the screen), of alpha 1 it is black, and with holes in half of a
+// fine checker the light is about halved. Shadow rays that took a hole for
+// an occluder would darken the open screen far more than 1%.
+TEST(Texture, CutOutsLetRaysAndShadowRaysThrough) {
+    const double open_sky = floor_mean(nullptr);
+    ASSERT_GT(open_sky, 0.05);
+    SceneTexture clear = texture(1, 1, TextureKind::Mask, {rgba(0, 0, 0, 0)});
+    SceneTexture solid = texture(1, 1, TextureKind::Mask, {rgba(0, 0, 0, 255)});
+    std::vector<std::uint32_t> checker(256 * 256);
+    for (int y = 0; y < 256; ++y)
+        for (int x = 0; x < 256; ++x)
+            checker[std::size_t(y) * 256 + x] = rgba(0, 0, 0, ((x / 2 + y / 2) % 2) ? 255 : 0);
+    SceneTexture half = texture(256, 256, TextureKind::Mask, checker);
+    ASSERT_TRUE(prepare_scene(screened_floor(&clear)).layout.features.cutouts);
+    EXPECT_NEAR(floor_mean(&clear), open_sky, 0.01 * open_sky);
+    EXPECT_EQ(floor_mean(&solid), 0.0);
+    double h = floor_mean(&half);
+    EXPECT_GT(h, 0.35 * open_sky);
+    EXPECT_LT(h, 0.65 * open_sky);
 }
