@@ -17,6 +17,15 @@ inline float fresnel_dielectric(float cos_i, float eta, float* cos_t) {
     return 0.5f * (r_s * r_s + r_p * r_p);
 }
 
+/* The same for a refraction whose both cosines are known (cos_i on the
+ * incident side, cos_t on the other, eta_t = eta_transmitted /
+ * eta_incident): symmetric under exchanging the sides. */
+inline float fresnel_refracted(float cos_i, float cos_t, float eta_t) {
+    float r_s = (cos_i - eta_t * cos_t) / (cos_i + eta_t * cos_t);
+    float r_p = (eta_t * cos_i - cos_t) / (eta_t * cos_i + cos_t);
+    return 0.5f * (r_s * r_s + r_p * r_p);
+}
+
 /* Per channel, for cos_i in [0, 1] and the conductor's index relative to
  * the incident medium. eta 0, k 1 gives 1 at every angle. */
 inline float3 fresnel_conductor(float cos_i, float3 eta, float3 k) {

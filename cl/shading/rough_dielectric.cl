@@ -50,7 +50,10 @@ inline void rough_dielectric_eval_pdf(const Material* m, float3 wo, float3 wi, f
     if (!rough_dielectric_half(&fr, &h)) return;
     bool bk = rough_dielectric_beckmann(m);
     float wo_h = dot(fr.wo, h), wi_h = dot(fr.wi, h), cos_t;
-    float F = fresnel_dielectric(wo_h, 1.0f / fr.eta_t, &cos_t);
+    /* For a transmitted pair both cosines are known: F from them is the
+     * same from either side and well conditioned near the critical angle. */
+    float F = fr.wi.z > 0.0f ? fresnel_dielectric(wo_h, 1.0f / fr.eta_t, &cos_t)
+                             : fresnel_refracted(wo_h, -wi_h, fr.eta_t);
     float p = layout_quantize_prob(F, LAYOUT_CHOICE_BITS);
     float d = mf_d(h, m->alpha, bk);
     float g = mf_g1(fr.wo, h, m->alpha, bk) * mf_g1(fr.wi, h, m->alpha, bk);
