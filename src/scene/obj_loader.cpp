@@ -8,6 +8,7 @@
 #include <tiny_obj_loader.h>
 
 #include <fstream>
+#include <map>
 
 namespace smallmlt {
 
@@ -74,6 +75,28 @@ void check_obj(const std::string& path, Scene& scene) {
     });
 }
 
+// Gives tinyobjloader the scene's materials whatever file an mtllib line
+// names (check_obj has read them all; tinyobjloader would read only the
+// first file of a line): a face's material id is its index in
+// scene.materials.
+class SceneMaterials : public tinyobj::MaterialReader {
+  public:
+    explicit SceneMaterials(const Scene& scene) : scene_(scene) {}
+    bool operator()(const std::string&, std::vector<tinyobj::material_t>* materials,
+                    std::map<std::string, int>* ids, std::string*, std::string*) override {
+        const std::vector<std::string>& names = scene_.material_names;
+        materials->assign(names.size(), tinyobj::material_t());
+        for (std::size_t i = 0; i < names.size(); ++i) {
+            (*materials)[i].name = names[i];
+            (*ids)[names[i]] = static_cast<int>(i);
+        }
+        return true;
+    }
+
+  private:
+    const Scene& scene_;
+};
+
 } // namespace
 
 void load_obj(const std::string& path, const std::string& where, Scene& scene) {
@@ -82,20 +105,18 @@ void load_obj(const std::string& path, const std::string& where, Scene& scene) {
     std::vector<tinyobj::shape_t> shapes;
     std::vector<tinyobj::material_t> mtls;
     std::string warn, err;
-    std::string base = dir_of(path);
-    if (!tinyobj::LoadObj(&attrib, &shapes, &mtls, &warn, &err, path.c_str(),
-                          base.empty() ? "./" : base.c_str(), true))
+    std::ifstream in(path);
+    SceneMaterials materials(scene);
+    if (!in || !tinyobj::LoadObj(&attrib, &shapes, &mtls, &warn, &err, &in, &materials, true))
         throw InputError(where + ": cannot read " + path + ": " + err);
     for (const tinyobj::shape_t& shape : shapes) {
         const std::vector<tinyobj::index_t>& idx = shape.mesh.indices;
         for (std::size_t f = 0; f < shape.mesh.num_face_vertices.size(); ++f) {
             int mid = shape.mesh.material_ids[f];
-            int ours = mid >= 0 && mid < static_cast<int>(mtls.size())
-                           ? material_index(scene, mtls[mid].name)
-                           : -1;
-            if (ours < 0) throw InputError(path + ": a face has no known material");
+            if (mid < 0 || mid >= static_cast<int>(scene.materials.size()))
+                throw InputError(path + ": a face has no known material");
             SceneTriangle tri;
-            tri.material = static_cast<std::uint32_t>(ours);
+            tri.material = static_cast<std::uint32_t>(mid);
             for (int k = 0; k < 3; ++k) {
                 int vi = idx[3 * f + k].vertex_index;
                 tri.v[k] = {attrib.vertices[3 * vi], attrib.vertices[3 * vi + 1],

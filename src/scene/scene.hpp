@@ -31,6 +31,8 @@ struct Scene {
     std::vector<std::string> material_names;
     std::set<std::string> mtl_files; // MTL files read so far (meshes may share one)
     int dropped_degenerate = 0;      // zero-area triangles left out at load
+    // What loads but is not rendered as written: "FILE:LINE: warning: ...".
+    std::vector<std::string> warnings;
 };
 
 constexpr int kMaxDepth = 64;
@@ -45,7 +47,8 @@ Scene load_scene(const std::string& path);
 // mesh directive, for messages about the file as a whole.
 void load_obj(const std::string& obj_path, const std::string& where, Scene& scene);
 
-// Materials of one MTL file, appended to scene.materials/material_names.
+// Materials of one MTL file, appended to scene.materials/material_names,
+// and its warnings to scene.warnings (src/scene/mtl_loader.cpp).
 void load_mtl(const std::string& mtl_path, Scene& scene);
 
 } // namespace smallmlt
