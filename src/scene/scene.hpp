@@ -16,9 +16,15 @@ struct Camera {
     float fov_y_deg = 40;
 };
 
+// A triangle as loaded. n[k] is the shading normal at v[k] (unit length):
+// interpolated across the triangle where `smooth` (from the OBJ's vn, or
+// computed for a smoothing group), else the geometric normal at all three.
+// The geometric normal cross(v1 - v0, v2 - v0) still decides the sides.
 struct SceneTriangle {
     Vec3 v[3];
     std::uint32_t material;
+    Vec3 n[3] = {Vec3{}, Vec3{}, Vec3{}};
+    bool smooth = false;
 };
 
 struct Scene {
