@@ -29,8 +29,8 @@ RUSTICL_ENV  := OCL_ICD_VENDORS=/etc/OpenCL/vendors/rusticl.icd RUSTICL_ENABLE=s
 # `make fuzz` only: libFuzzer comes with clang's runtime libraries.
 FUZZ_PACKAGES := clang libclang-rt-dev
 FUZZ_SECONDS  ?= 60
-FUZZ_SRC      := $(addprefix src/scene/,scene.cpp obj_loader.cpp mtl_loader.cpp text_parse.cpp \
-                   bvh.cpp device_scene.cpp sample_layout.cpp)
+FUZZ_SRC      := $(addprefix src/scene/,scene.cpp obj_loader.cpp mtl_loader.cpp mtl_models.cpp \
+                   material.cpp text_parse.cpp bvh.cpp device_scene.cpp sample_layout.cpp)
 
 # Kernel files: the product's (cl/, by stage) and the test binary's probes.
 CL_FILES   := $(sort $(wildcard cl/*/*.h cl/*/*.cl))

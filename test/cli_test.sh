@@ -52,6 +52,14 @@ printf 'mtllib dark.mtl\nv -1 0 -1\nv 1 0 -1\nv 0 2 -1\nv -1 5 -1\nv 1 5 -1\nv 0
 printf 'camera 0 1 3  0 1 0  0 1 0  40\nmesh dark.obj\n' > "$DIR/dark.scene"
 check black_scene 0 "carried light (b = 0): the image is black" -- "$BIN" render "$DIR/dark.scene" --width 8 --height 8 --threads 64 --out "$DIR/dark.pfm"
 check black_scene_is_black 0 "mse 0 rel_mse 0 mean 0 reference_mean 0" -- "$BIN" compare "$DIR/dark.pfm" "$DIR/dark.pfm"
+# MTL lines that change nothing: the render (even --quiet) and the budget
+# warn on stderr, once for the file.
+printf 'newmtl grey\nKd 0.5 0.5 0.5\nKa 1 1 1\nnewmtl lamp\nKe 5 5 5\nKa 1 1 1\n' > "$DIR/warn.mtl"
+sed 's/dark.mtl/warn.mtl/' "$DIR/dark.obj" > "$DIR/warn.obj"
+sed 's/dark.obj/warn.obj/' "$DIR/dark.scene" > "$DIR/warn.scene"
+warning="smallmlt: $DIR/warn.mtl:3: warning: 'Ka' changes nothing in these models (ignored; 2 lines)"
+check mtl_warning 0 "$warning" -- "$BIN" render "$DIR/warn.scene" --method pt --width 8 --height 8 --spp 1 --quiet --out "$DIR/warn.pfm"
+check budget_mtl_warning 0 "$warning" -- "$BIN" budget "$DIR/warn.scene" --depth 1
 grep -v lamp "$DIR/dark.obj" > "$DIR/unlit.obj"
 sed 's/dark.obj/unlit.obj/' "$DIR/dark.scene" > "$DIR/unlit.scene"
 check no_light 1 "unlit.scene: no emissive triangle" -- "$BIN" render "$DIR/unlit.scene" --out "$DIR/unlit.png"

@@ -102,6 +102,7 @@ void print_film(const DeviceScene& ds, const ChainShape& shape, const DeviceInfo
 
 int run_budget(const BudgetOptions& o) {
     Scene scene = load_scene(o.scene);
+    print_scene_warnings(scene);
     int max_depth = o.depth.value_or(scene.depth); // rows 1..max_depth, or 0 alone
     scene.depth = max_depth;
     if (o.width) scene.width = *o.width;

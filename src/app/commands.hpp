@@ -22,6 +22,9 @@ int run_render(const RenderOptions& o, RankGroup& ranks);
 // to the device (what run_render runs; tests rebuild a job's ranks with it).
 std::unique_ptr<Integrator> make_integrator(const RenderOptions& o, const ClContext& cl,
                                             const DeviceScene& ds, const RankGroup& ranks);
+// Prints the scene's warnings on stderr, one a line, as "smallmlt: ..."
+// (render_command.cpp).
+void print_scene_warnings(const Scene& scene);
 int run_budget(const BudgetOptions& o);   // budget_command.cpp
 int run_compare(const std::string& image, // compare_command.cpp
                 const std::string& reference, const std::string& mask);

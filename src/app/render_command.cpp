@@ -121,6 +121,7 @@ void set_up(const RenderOptions& o, RankGroup& ranks, RenderSetup& s) {
     check_output_dirs(o.outs);
     if (!o.log.empty()) check_output_dirs({o.log}, "--log");
     s.scene = load_scene(o.scene);
+    if (ranks.rank() == 0) print_scene_warnings(s.scene);
     if (o.width) s.scene.width = *o.width;
     if (o.height) s.scene.height = *o.height;
     if (o.depth) s.scene.depth = *o.depth;
@@ -208,6 +209,11 @@ void print_summary(const RenderOptions& o, const RenderSetup& s, const LoopResul
 }
 
 } // namespace
+
+void print_scene_warnings(const Scene& scene) {
+    for (const std::string& w : scene.warnings)
+        std::fprintf(stderr, "smallmlt: %s\n", w.c_str());
+}
 
 int run_render(const RenderOptions& o, RankGroup& ranks) {
     InterruptGuard interrupts; // from here on, a signal stops the render cleanly

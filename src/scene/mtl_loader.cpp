@@ -1,135 +1,248 @@
-// Reader of MTL material files: the subset of doc/scene-format.md, and an
-// error naming file and line for anything else.
+// Reader of MTL material files as modelling tools write them: every
+// directive of doc/scene-format.md's MTL table is read and checked (an error
+// names file and line), the model is chosen in src/scene/mtl_models.cpp, and
+// what the models cannot show gives one warning per file and directive.
 #include "base/error.hpp"
-#include "scene/material.hpp"
+#include "scene/mtl_models.hpp"
 #include "scene/scene.hpp"
 #include "scene/text_parse.hpp"
+
+#include <algorithm>
+#include <map>
 
 namespace smallmlt {
 
 namespace {
 
-struct PendingMaterial {
-    std::string name;
-    int line = 0;
-    float kd[3] = {0, 0, 0}, ke[3] = {0, 0, 0}, ks[3] = {0, 0, 0};
-    float ior = 0;
-    int illum = 1, illum_line = 0;
-    bool has_ks = false;
+// The warnings of one MTL file: one per kind, at the first line that gave
+// it, with the number of lines that did.
+class FileWarnings {
+  public:
+    // `ignored`: the line's directive is left out (said in the count).
+    void add(const std::string& key, int line, const std::string& text, bool ignored) {
+        auto [it, fresh] = index_.emplace(key, entries_.size());
+        if (fresh) {
+            entries_.push_back({line, 1, text, ignored});
+            return;
+        }
+        Entry& e = entries_[it->second];
+        ++e.count;
+        if (line < e.line) { // lines of one kind come in order; kept safe
+            e.line = line;
+            e.text = text;
+        }
+    }
+
+    void append_to(std::vector<std::string>& out, const std::string& file) const {
+        std::vector<Entry> sorted = entries_;
+        std::stable_sort(sorted.begin(), sorted.end(),
+                         [](const Entry& a, const Entry& b) { return a.line < b.line; });
+        for (const Entry& e : sorted)
+            out.push_back(file + ":" + std::to_string(e.line) + ": warning: " + e.text + " (" +
+                          (e.ignored ? "ignored; " : "") + std::to_string(e.count) +
+                          (e.count == 1 ? " line)" : " lines)"));
+    }
+
+  private:
+    struct Entry {
+        int line, count;
+        std::string text;
+        bool ignored;
+    };
+    std::vector<Entry> entries_;
+    std::map<std::string, std::size_t> index_;
 };
 
-void read_rgb(const std::vector<std::string>& t, const std::string& file, int line, float lo,
-              float hi, float out[3]) {
-    if (t.size() != 4) throw input_error(file, line, "'" + t[0] + "' takes three numbers (R G B)");
-    for (int i = 0; i < 3; ++i) {
-        out[i] = parse_float(t[1 + i], file, line, t[0].c_str());
-        if (out[i] < lo || out[i] > hi)
-            throw input_error(file, line,
-                              "'" + t[0] + "' values must be in [" + std::to_string(lo) + ", " +
-                                  (hi > 1e30f ? std::string("inf") : std::to_string(hi)) + "]");
+// Texture maps of a value the models have, and the constant used instead.
+const std::map<std::string, std::string> kTextureMaps = {
+    {"map_Kd", "Kd"}, {"map_Ks", "Ks"}, {"map_Ke", "Ke"}, {"map_Ns", "Ns"},
+    {"map_Pr", "Pr"}, {"map_Pm", "Pm"}, {"map_d", "d"}};
+
+// Maps of what no model has (warned about in mtl_models.cpp).
+bool is_other_map(const std::string& d) {
+    for (const char* n : {"map_Ka", "map_Bump", "map_bump", "bump", "norm", "disp", "decal", "refl",
+                          "map_refl", "map_Ps", "map_Pc", "map_Pcr"})
+        if (d == n) return true;
+    return false;
+}
+
+// Numbers read and checked, whose value no model uses.
+bool is_ignored_number(const std::string& d) {
+    for (const char* n : {"Pcr", "anisor", "sharpness"})
+        if (d == n) return true;
+    return false;
+}
+
+class MtlReader {
+  public:
+    MtlReader(const std::string& path, Scene& scene) : path_(path), scene_(scene) {}
+
+    void directive(int line, const std::vector<std::string>& t) {
+        const std::string& d = t[0];
+        if (d == "newmtl") {
+            if (t.size() != 2) throw input_error(path_, line, "'newmtl' takes one name");
+            finish();
+            cur_ = MtlMaterial();
+            cur_.name = t[1];
+            cur_.line = cur_.illum_line = line;
+            open_ = true;
+            return;
+        }
+        if (!open_) throw input_error(path_, line, "'" + d + "' before any 'newmtl'");
+        MtlLine l{d, line, false};
+        if (d == "Kd" || d == "Ks" || d == "Ke") {
+            Vec3 c = rgb(t, line, d == "Ke" ? 3.0e38f : 1.0f);
+            l.nonzero = c.x != 0 || c.y != 0 || c.z != 0;
+            (d == "Kd" ? cur_.kd : d == "Ks" ? cur_.ks : cur_.ke) = c;
+            cur_.has_ks = cur_.has_ks || d == "Ks";
+        } else if (d == "Ka" || d == "Tf") {
+            if (t.size() < 2) throw input_error(path_, line, "'" + d + "' takes a colour");
+            for (std::size_t i = 1; i < t.size(); ++i)
+                parse_float(t[i], path_, line, d.c_str());
+        } else if (d == "Ni") {
+            float v = number(t, line);
+            if (!(v > 0)) throw input_error(path_, line, "'Ni' must be > 0");
+            cur_.ni = v;
+        } else if (d == "Ns") {
+            cur_.ns = number_in(t, line, 0.0f, kMaxNs);
+        } else if (d == "Pr") {
+            cur_.pr = number_in(t, line, 0.0f, 1.0f);
+        } else if (d == "Pm") {
+            cur_.pm = metallic(t, line);
+            l.nonzero = cur_.pm != 0;
+        } else if (d == "Pc" || d == "Ps" || d == "aniso") {
+            float v = number(t, line);
+            l.nonzero = v != 0;
+            if (d == "Pc") cur_.pc = v;
+            if (d == "aniso") cur_.aniso = v;
+        } else if (is_ignored_number(d)) {
+            number(t, line);
+        } else if (d == "d" || d == "Tr") {
+            opacity(t, line);
+        } else if (d == "illum") {
+            if (t.size() != 2) throw input_error(path_, line, "'illum' takes one integer");
+            cur_.illum = parse_int(t[1], path_, line, "illum"); // checked at the end
+            cur_.illum_line = line;
+            if (cur_.illum == 10)
+                warnings_.add("illum 10", line,
+                              "illum 10: the shadow matte is not modelled; the material "
+                              "renders as with illum 1",
+                              false);
+        } else if (kTextureMaps.count(d)) {
+            map_file(t, line);
+            warnings_.add(d, line,
+                          "'" + d +
+                              "' is not read yet (textures are not supported): the constant '" +
+                              kTextureMaps.at(d) + "' is used, or its default",
+                          true);
+        } else if (is_other_map(d)) {
+            map_file(t, line);
+        } else {
+            throw input_error(path_, line, "unsupported material directive '" + d + "'");
+        }
+        cur_.lines.push_back(l);
     }
-}
 
-Vec3 vec(const float c[3]) {
-    return {c[0], c[1], c[2]};
-}
-
-Material finish(const PendingMaterial& p, const std::string& file) {
-    Material m{};
-    switch (p.illum) {
-    case 0:
-    case 1:
-        m = diffuse_material(vec(p.kd));
-        break;
-    case 2:
-        if (p.ks[0] > 0 || p.ks[1] > 0 || p.ks[2] > 0)
-            throw input_error(file, p.illum_line,
-                              "material '" + p.name +
-                                  "': illum 2 with non-zero Ks is a glossy highlight, which is "
-                                  "not supported (use Ks 0 0 0, or illum 5 for a mirror)");
-        m = diffuse_material(vec(p.kd));
-        break;
-    case 3:
-    case 5:
-        if (!p.has_ks)
-            throw input_error(file, p.illum_line,
-                              "material '" + p.name + "': a mirror (illum " +
-                                  std::to_string(p.illum) + ") needs Ks");
-        m = conductor_material(vec(p.ks), {0, 0, 0}, {1, 1, 1}, 0.0f);
-        break;
-    case 7:
-        if (!(p.ior > 0))
-            throw input_error(file, p.illum_line,
-                              "material '" + p.name + "': a dielectric (illum 7) needs Ni > 0");
-        m = dielectric_material(p.ior, 0.0f);
-        break;
-    default:
-        throw input_error(file, p.illum_line,
-                          "material '" + p.name + "': illum " + std::to_string(p.illum) +
-                              " is not supported (0, 1, 2: diffuse; 3, 5: mirror; 7: dielectric)");
+    // Adds the last material and the file's warnings to the scene.
+    void end() {
+        finish();
+        warnings_.append_to(scene_.warnings, path_);
     }
-    set_emission(m, vec(p.ke));
-    return m;
-}
 
-void add_material(Scene& scene, const PendingMaterial& p, const std::string& file) {
-    for (const std::string& n : scene.material_names)
-        if (n == p.name)
-            throw input_error(file, p.line, "material '" + p.name + "' is defined twice");
-    scene.materials.push_back(finish(p, file));
-    scene.material_names.push_back(p.name);
-}
+  private:
+    void finish() {
+        if (!open_) return;
+        open_ = false;
+        for (const std::string& n : scene_.material_names)
+            if (n == cur_.name)
+                throw input_error(path_, cur_.line,
+                                  "material '" + cur_.name + "' is defined twice");
+        MtlMapping m = map_mtl_material(cur_, path_);
+        for (const MtlLine& l : m.ignored)
+            warnings_.add(l.directive, l.line,
+                          "'" + l.directive + "' changes nothing in these models", true);
+        scene_.materials.push_back(m.material);
+        scene_.material_names.push_back(cur_.name);
+    }
+
+    Vec3 rgb(const std::vector<std::string>& t, int line, float hi) const {
+        if (t.size() != 4)
+            throw input_error(path_, line, "'" + t[0] + "' takes three numbers (R G B)");
+        float c[3];
+        for (int i = 0; i < 3; ++i) {
+            c[i] = parse_float(t[1 + i], path_, line, t[0].c_str());
+            if (c[i] < 0 || c[i] > hi)
+                throw input_error(path_, line,
+                                  "'" + t[0] + "' values must be in [0, " +
+                                      (hi > 1e30f ? std::string("inf") : std::string("1")) + "]");
+        }
+        return {c[0], c[1], c[2]};
+    }
+
+    float number(const std::vector<std::string>& t, int line) const {
+        if (t.size() != 2) throw input_error(path_, line, "'" + t[0] + "' takes one number");
+        return parse_float(t[1], path_, line, t[0].c_str());
+    }
+
+    float number_in(const std::vector<std::string>& t, int line, float lo, float hi) const {
+        float v = number(t, line);
+        if (v < lo || v > hi)
+            throw input_error(path_, line,
+                              "'" + t[0] + "' must be in [" + format(lo) + ", " + format(hi) + "]");
+        return v;
+    }
+
+    static std::string format(float v) {
+        return std::to_string(static_cast<long>(v)); // the bounds are whole numbers
+    }
+
+    // Pm: metal from kMetalPm up; below it, not metal (with a warning
+    // unless 0).
+    float metallic(const std::vector<std::string>& t, int line) {
+        float v = number_in(t, line, 0.0f, 1.0f);
+        if (v >= kMetalPm) return v;
+        if (v > 0)
+            warnings_.add("Pm rounded", line,
+                          "metallic Pm " + t[1] +
+                              " is rounded to 0: materials are either metal or not, and metal "
+                              "from Pm 0.5 up",
+                          false);
+        return 0.0f;
+    }
+
+    // d (opacity) and Tr = 1 - d: the surface is opaque whatever they say.
+    void opacity(const std::vector<std::string>& t, int line) {
+        float v = number_in(t, line, 0.0f, 1.0f);
+        bool opaque = t[0] == "d" ? v == 1.0f : v == 0.0f;
+        if (!opaque)
+            warnings_.add(t[0], line,
+                          "'" + t[0] + " " + t[1] +
+                              "': partial transparency is not modelled and the surface renders "
+                              "opaque; a cut-out through map_d will come with textures",
+                          false);
+    }
+
+    // A map's options (-bm 1, -s 1 1 1, ...) come before its file name,
+    // the last token; none of them is read.
+    void map_file(const std::vector<std::string>& t, int line) const {
+        if (t.size() < 2) throw input_error(path_, line, "'" + t[0] + "' takes a file name");
+    }
+
+    std::string path_;
+    Scene& scene_;
+    MtlMaterial cur_;
+    bool open_ = false;
+    FileWarnings warnings_;
+};
 
 } // namespace
 
 void load_mtl(const std::string& path, Scene& scene) {
-    PendingMaterial cur;
-    bool open = false;
+    MtlReader reader(path, scene);
     for_each_directive(path, "material", [&](int line, const std::vector<std::string>& t) {
-        const std::string& d = t[0];
-        if (d == "newmtl") {
-            if (t.size() != 2) throw input_error(path, line, "'newmtl' takes one name");
-            if (open) add_material(scene, cur, path);
-            cur = PendingMaterial();
-            cur.name = t[1];
-            cur.line = cur.illum_line = line;
-            open = true;
-            return;
-        }
-        if (!open) throw input_error(path, line, "'" + d + "' before any 'newmtl'");
-        if (d == "Kd") {
-            read_rgb(t, path, line, 0.0f, 1.0f, cur.kd);
-        } else if (d == "Ks") {
-            read_rgb(t, path, line, 0.0f, 1.0f, cur.ks);
-            cur.has_ks = true;
-        } else if (d == "Ke") {
-            read_rgb(t, path, line, 0.0f, 3.0e38f, cur.ke);
-        } else if (d == "Ni") {
-            if (t.size() != 2) throw input_error(path, line, "'Ni' takes one number");
-            cur.ior = parse_float(t[1], path, line, "Ni");
-            if (!(cur.ior > 0)) throw input_error(path, line, "'Ni' must be > 0");
-        } else if (d == "illum") {
-            if (t.size() != 2) throw input_error(path, line, "'illum' takes one integer");
-            cur.illum = static_cast<int>(parse_int(t[1], path, line, "illum"));
-            cur.illum_line = line;
-        } else if (d == "Ka" || d == "Ns") {
-            // Ambient colour and Phong exponent: no meaning for the supported
-            // materials; read for their syntax and ignored (documented).
-            if (t.size() < 2) throw input_error(path, line, "'" + d + "' takes a value");
-            for (std::size_t i = 1; i < t.size(); ++i)
-                parse_float(t[i], path, line, d.c_str());
-        } else if (d == "d" || d == "Tr") {
-            if (t.size() != 2) throw input_error(path, line, "'" + d + "' takes one number");
-            float v = parse_float(t[1], path, line, d.c_str());
-            if (v != (d == "d" ? 1.0f : 0.0f))
-                throw input_error(path, line,
-                                  "partial transparency ('" + d +
-                                      "') is not supported; use illum 7 for glass");
-        } else {
-            throw input_error(path, line, "unsupported material directive '" + d + "'");
-        }
+        reader.directive(line, t);
     });
-    if (open) add_material(scene, cur, path);
+    reader.end();
 }
 
 } // namespace smallmlt

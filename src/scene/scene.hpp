@@ -17,6 +17,10 @@ struct Camera {
     float fov_y_deg = 40;
 };
 
+// A triangle as loaded. n[k] is the shading normal at v[k] (unit length):
+// interpolated across the triangle where `smooth` (from the OBJ's vn, or
+// computed for a smoothing group), else the geometric normal at all three.
+// The geometric normal cross(v1 - v0, v2 - v0) still decides the sides.
 struct SceneTriangle {
     Vec3 v[3];
     std::uint32_t material = 0;
@@ -46,6 +50,8 @@ struct Scene {
     std::vector<SceneTexture> textures; // Material.*_tex index into it
     std::set<std::string> mtl_files;    // MTL files read so far (meshes may share one)
     int dropped_degenerate = 0;         // zero-area triangles left out at load
+    // What loads but is not rendered as written: "FILE:LINE: warning: ...".
+    std::vector<std::string> warnings;
 };
 
 constexpr int kMaxDepth = 64;
@@ -60,7 +66,8 @@ Scene load_scene(const std::string& path);
 // mesh directive, for messages about the file as a whole.
 void load_obj(const std::string& obj_path, const std::string& where, Scene& scene);
 
-// Materials of one MTL file, appended to scene.materials/material_names.
+// Materials of one MTL file, appended to scene.materials/material_names,
+// and its warnings to scene.warnings (src/scene/mtl_loader.cpp).
 void load_mtl(const std::string& mtl_path, Scene& scene);
 
 } // namespace smallmlt
