@@ -11,10 +11,7 @@ __kernel void probe_shading_normal(SCENE_ARGS, const uint tri, __global const fl
     r.o = o[i].xyz;
     r.d = d[i].xyz;
     r.tmax = INFINITY;
-    Hit h;
-    h.tri = tri;
-    h.t = geo_intersect(&r, &sc.tris[tri]);
     float3 ng = normalize(geo_tri_normal(&sc.tris[tri]));
     float2 b = geo_barycentrics(&r, &sc.tris[tri]);
-    out[i] = (float4)(path_shading_normal(&sc, &r, &h, ng), b.x + b.y);
+    out[i] = (float4)(path_shading_normal(&sc, tri, b, ng), b.x + b.y);
 }
