@@ -98,6 +98,21 @@ void print_film(const DeviceScene& ds, const ChainShape& shape, const DeviceInfo
                 format_bytes(mlt_min).c_str(), kMinThreads, format_bytes(pt_min).c_str());
 }
 
+// Each texture and its size on the device, within the textures' budget.
+void print_textures(const Scene& scene, const DeviceBudget& budget, const std::string& halved) {
+    if (scene.textures.empty()) return;
+    std::uint64_t total = 0;
+    for (const SceneTexture& t : scene.textures)
+        total += t.bytes();
+    std::printf("textures: %zu, %s of %s allowed (8-bit RGBA texels)\n", scene.textures.size(),
+                format_bytes(total).c_str(), format_bytes(texture_budget(budget)).c_str());
+    for (const SceneTexture& t : scene.textures)
+        std::printf("  %s: %dx%d, %s%s\n", t.file.c_str(), t.width, t.height,
+                    format_bytes(t.bytes()).c_str(),
+                    t.halvings ? (" (halved " + std::to_string(t.halvings) + "x)").c_str() : "");
+    if (!halved.empty()) std::printf("note: %s\n", halved.c_str());
+}
+
 } // namespace
 
 int run_budget(const BudgetOptions& o) {
@@ -107,7 +122,6 @@ int run_budget(const BudgetOptions& o) {
     scene.depth = max_depth;
     if (o.width) scene.width = *o.width;
     if (o.height) scene.height = *o.height;
-    DeviceScene ds = prepare_scene(scene);
     std::vector<DeviceInfo> devs = cl_list_devices();
     if (o.device >= int(devs.size()))
         throw UsageError("--device: index " + std::to_string(o.device) + " out of range");
@@ -115,6 +129,8 @@ int run_budget(const BudgetOptions& o) {
     if (o.profile) dev = emulate_profile(dev, find_device_profile(*o.profile));
     require_work_group(dev);
     DeviceBudget budget = device_budget(dev, o.device_mem);
+    std::string halved = fit_scene_textures(scene, budget, o.texture_max);
+    DeviceScene ds = prepare_scene(scene);
     ChainShape shape = mlt_chain_shape(o.mlt);
     if (o.threads) {
         shape.threads = *o.threads;
@@ -132,6 +148,7 @@ int run_budget(const BudgetOptions& o) {
                     format_bytes(budget.max_alloc_bytes).c_str(),
                     budget.emulated ? " (emulated)" : "");
         print_film(ds, shape, dev, budget);
+        print_textures(scene, budget, halved);
     }
     std::vector<BudgetRow> rows;
     for (int d = std::min(1, max_depth); d <= max_depth; ++d)

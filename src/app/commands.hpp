@@ -25,6 +25,11 @@ std::unique_ptr<Integrator> make_integrator(const RenderOptions& o, const ClCont
 // Prints the scene's warnings on stderr, one a line, as "smallmlt: ..."
 // (render_command.cpp).
 void print_scene_warnings(const Scene& scene);
+
+// Halves the scene's textures to fit the device (texture_budget) and
+// --texture-max; returns what it halved, for a note ("" if nothing).
+std::string fit_scene_textures(Scene& scene, const DeviceBudget& budget,
+                               std::optional<int> texture_max);
 int run_budget(const BudgetOptions& o);   // budget_command.cpp
 int run_compare(const std::string& image, // compare_command.cpp
                 const std::string& reference, const std::string& mask);

@@ -75,6 +75,11 @@ const std::vector<Flag> kRenderFlags = {
      "maximum bounces, {range} (overrides the scene); budget reports each depth from 1 to D "
      "(D = 0: depth 0 alone)",
      0, kMaxDepth},
+    {"--texture-max", "N", Section::Render,
+     [](JobOptions& o, const FlagValue& v) { o.texture_max = int(v.integer()); },
+     "halve every texture until its longer side is at most N pixels, {range} (textures are "
+     "also halved, largest first, to fit a quarter of the device's memory)",
+     1, 16384},
     {"--device", "INDEX", Section::Render,
      [](JobOptions& o, const FlagValue& v) {
          o.device = int(v.integer());

@@ -34,6 +34,7 @@ struct JobOptions {
     std::optional<std::uint64_t> device_mem;
     std::optional<std::string> profile;   // --profile: a device of doc/devices.md
     std::optional<std::uint32_t> threads; // unset: auto (src/device/memory_plan.hpp)
+    std::optional<int> texture_max;       // --texture-max: longest texture side
     // The chains: --proposals, --split, --target and render's MLT flags.
     // threads, seed and max_alloc_bytes are set per device and rank
     // (make_integrator).

@@ -112,6 +112,7 @@ struct RenderSetup {
     DeviceScene ds;
     std::unique_ptr<ClContext> cl;
     std::unique_ptr<Integrator> method;
+    std::string texture_note; // what fit_scene_textures halved
 };
 
 void set_up(const RenderOptions& o, RankGroup& ranks, RenderSetup& s) {
@@ -129,11 +130,13 @@ void set_up(const RenderOptions& o, RankGroup& ranks, RenderSetup& s) {
     if (!o.reference.empty() && ranks.rank() == 0)
         s.log = std::make_unique<ConvergenceLog>(o.reference, o.reference_mask, o.log,
                                                  o.log_interval_s, s.scene.width, s.scene.height);
-    s.ds = prepare_scene(s.scene);
     int device = o.device;
     if (!o.device_given) device = ranks.local_rank() % int(cl_list_devices().size());
     s.cl = std::make_unique<ClContext>(device);
     if (o.profile) s.cl->emulate(emulate_profile(s.cl->device(), find_device_profile(*o.profile)));
+    s.texture_note =
+        fit_scene_textures(s.scene, device_budget(s.cl->device(), o.device_mem), o.texture_max);
+    s.ds = prepare_scene(s.scene);
     s.method = make_integrator(o, *s.cl, s.ds, ranks);
 }
 
@@ -204,11 +207,31 @@ void print_summary(const RenderOptions& o, const RenderSetup& s, const LoopResul
             std::printf("note%s: %s\n", who.c_str(), rest.substr(0, at).c_str());
         }
     }
+    if (!s.texture_note.empty()) std::printf("note: %s\n", s.texture_note.c_str());
     if (s.scene.dropped_degenerate)
         std::printf("note: %d zero-area triangle(s) left out\n", s.scene.dropped_degenerate);
 }
 
 } // namespace
+
+std::string fit_scene_textures(Scene& scene, const DeviceBudget& budget,
+                               std::optional<int> texture_max) {
+    std::vector<std::string> before;
+    for (const SceneTexture& t : scene.textures)
+        before.push_back(std::to_string(t.width) + "x" + std::to_string(t.height));
+    int n = fit_textures(scene.textures, texture_budget(budget), texture_max.value_or(0));
+    if (n == 0) return "";
+    std::string what;
+    for (std::size_t i = 0; i < scene.textures.size(); ++i) {
+        const SceneTexture& t = scene.textures[i];
+        if (t.halvings == 0) continue;
+        what += (what.empty() ? "" : ", ") + t.file + " " + std::to_string(t.width) + "x" +
+                std::to_string(t.height) + " (from " + before[i] + ")";
+    }
+    return "textures halved " + std::to_string(n) + " time(s) to fit " +
+           format_bytes(texture_budget(budget)) +
+           (texture_max ? " and --texture-max " + std::to_string(*texture_max) : "") + ": " + what;
+}
 
 void print_scene_warnings(const Scene& scene) {
     for (const std::string& w : scene.warnings)

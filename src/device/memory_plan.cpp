@@ -181,6 +181,10 @@ void check_chain_shape(const ChainShape& shape) {
                          "--proposals " + std::to_string(k));
 }
 
+std::uint64_t texture_budget(const DeviceBudget& b) {
+    return std::min(b.max_alloc_bytes, std::uint64_t(kTextureFraction * double(b.global_bytes)));
+}
+
 DeviceBudget device_budget(const DeviceInfo& dev, std::optional<std::uint64_t> device_mem) {
     DeviceBudget b{dev.global_mem_bytes, dev.max_alloc_bytes, false};
     if (device_mem) {

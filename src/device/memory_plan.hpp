@@ -116,10 +116,16 @@ struct DeviceBudget {
 // driver, the display and other programs).
 constexpr double kMemoryFraction = 0.5;
 constexpr std::uint32_t kMinThreads = 64; // one work-group: the smallest useful render
+// The scene's textures may take this fraction of device memory, and no more
+// than the largest allocation (they are one buffer): the rest is the render's.
+constexpr double kTextureFraction = 0.25;
 
 // --device-mem B emulates a device of B bytes (never more than the real one)
 // whose largest allocation is B / 4, the least OpenCL allows.
 DeviceBudget device_budget(const DeviceInfo& dev, std::optional<std::uint64_t> device_mem);
+
+// The bytes of texels a scene may keep on the device (kTextureFraction).
+std::uint64_t texture_budget(const DeviceBudget& b);
 
 bool plan_fits(const MemoryPlan& plan, const DeviceBudget& b);
 

@@ -53,10 +53,15 @@ class FileWarnings {
     std::map<std::string, std::size_t> index_;
 };
 
-// Texture maps of a value the models have, and the constant used instead.
-const std::map<std::string, std::string> kTextureMaps = {
-    {"map_Kd", "Kd"}, {"map_Ks", "Ks"}, {"map_Ke", "Ke"}, {"map_Ns", "Ns"},
-    {"map_Pr", "Pr"}, {"map_Pm", "Pm"}, {"map_d", "d"}};
+// Texture maps the models read.
+const char* const kReadMaps[] = {"map_Kd", "map_Ks", "map_Pr", "map_d"};
+
+// Texture maps of a value the models have but do not take a texture for,
+// the constant used instead and why.
+const std::map<std::string, std::pair<std::string, std::string>> kUnreadMaps = {
+    {"map_Ke", {"Ke", "emission is not textured"}},
+    {"map_Ns", {"Ns", "the roughness map is map_Pr"}},
+    {"map_Pm", {"Pm", "a material is metal or not"}}};
 
 // Maps of what no model has (warned about in mtl_models.cpp).
 bool is_other_map(const std::string& d) {
@@ -128,12 +133,19 @@ class MtlReader {
                               "illum 10: the shadow matte is not modelled; the material "
                               "renders as with illum 1",
                               false);
-        } else if (kTextureMaps.count(d)) {
+        } else if (std::find(std::begin(kReadMaps), std::end(kReadMaps), d) !=
+                   std::end(kReadMaps)) {
+            MtlMap map{dir_of(path_) + map_file(t, line), line};
+            (d == "map_Kd"   ? cur_.map_kd
+             : d == "map_Ks" ? cur_.map_ks
+             : d == "map_Pr" ? cur_.map_pr
+                             : cur_.map_d) = map;
+        } else if (kUnreadMaps.count(d)) {
             map_file(t, line);
+            const auto& [constant, why] = kUnreadMaps.at(d);
             warnings_.add(d, line,
-                          "'" + d +
-                              "' is not read yet (textures are not supported): the constant '" +
-                              kTextureMaps.at(d) + "' is used, or its default",
+                          "'" + d + "' is not read (" + why + "): the constant '" + constant +
+                              "' is used, or its default",
                           true);
         } else if (is_other_map(d)) {
             map_file(t, line);
@@ -161,6 +173,8 @@ class MtlReader {
         for (const MtlLine& l : m.ignored)
             warnings_.add(l.directive, l.line,
                           "'" + l.directive + "' changes nothing in these models", true);
+        for (const MtlTexture& t : m.textures)
+            m.material.*t.slot = texture_index(t);
         scene_.materials.push_back(m.material);
         scene_.material_names.push_back(cur_.name);
     }
@@ -218,14 +232,25 @@ class MtlReader {
             warnings_.add(t[0], line,
                           "'" + t[0] + " " + t[1] +
                               "': partial transparency is not modelled and the surface renders "
-                              "opaque; a cut-out through map_d will come with textures",
+                              "opaque (map_d makes a cut-out)",
                           false);
     }
 
     // A map's options (-bm 1, -s 1 1 1, ...) come before its file name,
     // the last token; none of them is read.
-    void map_file(const std::vector<std::string>& t, int line) const {
+    std::string map_file(const std::vector<std::string>& t, int line) const {
         if (t.size() < 2) throw input_error(path_, line, "'" + t[0] + "' takes a file name");
+        return t.back();
+    }
+
+    // The scene's index of the texture, read once per file and kind.
+    u32 texture_index(const MtlTexture& t) {
+        for (std::size_t i = 0; i < scene_.textures.size(); ++i)
+            if (scene_.textures[i].file == t.map.file && scene_.textures[i].kind == t.kind)
+                return static_cast<u32>(i);
+        scene_.textures.push_back(
+            load_texture(t.map.file, t.kind, path_ + ":" + std::to_string(t.map.line)));
+        return static_cast<u32>(scene_.textures.size() - 1);
     }
 
     std::string path_;

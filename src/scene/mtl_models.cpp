@@ -92,6 +92,8 @@ MtlMapping map_mtl_material(const MtlMaterial& m, const std::string& file) {
                            "without Ks; 3, 5, 8 mirror; 4, 6, 7, 9 dielectric; 10 as 1)");
     float r = mtl_roughness(m);
     float alpha = r * r;
+    // A roughness map makes the model rough, whatever the constant says.
+    if (m.map_pr && !(alpha >= kSmoothAlpha)) alpha = kSmoothAlpha;
     Kind kind = kind_of(m);
     MtlMapping out;
     switch (kind) {
@@ -116,6 +118,26 @@ MtlMapping map_mtl_material(const MtlMaterial& m, const std::string& file) {
     set_emission(out.material, m.ke);
     for (const MtlLine& l : m.lines)
         if (changes_nothing(l, kind, m)) out.ignored.push_back(l);
+    // The maps the model reads; the others change nothing.
+    bool base = kind == Kind::Diffuse || kind == Kind::Plastic;
+    if (m.map_kd && (base || kind == Kind::Metal))
+        out.textures.push_back(
+            {base ? &Material::kd_tex : &Material::ks_tex, *m.map_kd, TextureKind::Colour});
+    else if (m.map_kd)
+        out.ignored.push_back({"map_Kd", m.map_kd->line, true});
+    if (m.map_ks && (kind == Kind::Plastic || kind == Kind::Mirror))
+        out.textures.push_back({&Material::ks_tex, *m.map_ks, TextureKind::Colour});
+    else if (m.map_ks)
+        out.ignored.push_back({"map_Ks", m.map_ks->line, true});
+    if (m.map_pr && kind != Kind::Diffuse)
+        out.textures.push_back({&Material::rough_tex, *m.map_pr, TextureKind::Data});
+    else if (m.map_pr)
+        out.ignored.push_back({"map_Pr", m.map_pr->line, true});
+    // Emitters and dielectrics are not cut out.
+    if (m.map_d && kind != Kind::Dielectric && !out.material.emissive)
+        out.textures.push_back({&Material::alpha_tex, *m.map_d, TextureKind::Mask});
+    else if (m.map_d)
+        out.ignored.push_back({"map_d", m.map_d->line, true});
     return out;
 }
 

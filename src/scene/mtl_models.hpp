@@ -3,6 +3,7 @@
 // rules are doc/scene-format.md's MTL tables.
 #pragma once
 #include "base/vec3.hpp"
+#include "scene/texture.hpp"
 #include "shared_types.h"
 
 #include <optional>
@@ -24,6 +25,13 @@ struct MtlLine {
     bool nonzero = false; // its value has a non-zero number in it
 };
 
+// A texture map a material names: its file (relative to the working
+// directory) and the line.
+struct MtlMap {
+    std::string file;
+    int line = 0;
+};
+
 // What one `newmtl` block says; what it leaves out keeps these defaults.
 struct MtlMaterial {
     std::string name;
@@ -36,6 +44,7 @@ struct MtlMaterial {
     long illum = 1;
     int illum_line = 0;         // the `newmtl` line where no illum is given
     std::vector<MtlLine> lines; // every directive after `newmtl`, in order
+    std::optional<MtlMap> map_kd, map_ks, map_pr, map_d;
 };
 
 // Roughness in [0, 1] from Ns in [0, kMaxNs], the inverse of Blender's
@@ -46,8 +55,17 @@ float roughness_from_ns(float ns);
 // microfacet alpha is its square.
 float mtl_roughness(const MtlMaterial& m);
 
+// A texture the Material needs: which of its fields takes the texture's
+// index once loaded, and how its texels are read.
+struct MtlTexture {
+    u32 Material::*slot;
+    MtlMap map;
+    TextureKind kind;
+};
+
 struct MtlMapping {
-    Material material;
+    Material material; // its *_tex fields still TEX_NONE
+    std::vector<MtlTexture> textures;
     std::vector<MtlLine> ignored; // its lines that change nothing in that model
 };
 

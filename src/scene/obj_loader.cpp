@@ -253,6 +253,10 @@ void load_obj(const std::string& path, const std::string& where, Scene& scene) {
             tri.smooth = given || g != 0;
             for (int k = 0; k < 3; ++k) {
                 const tinyobj::index_t& r = idx[3 * f + k];
+                if (r.texcoord_index >= 0) {
+                    tri.uv[k][0] = attrib.texcoords[2 * std::size_t(r.texcoord_index)];
+                    tri.uv[k][1] = attrib.texcoords[2 * std::size_t(r.texcoord_index) + 1];
+                }
                 if (given) {
                     const float* n = &attrib.normals[3 * r.normal_index];
                     tri.n[k] = unit(n[0], n[1], n[2]);
