@@ -60,6 +60,14 @@ sed 's/dark.obj/warn.obj/' "$DIR/dark.scene" > "$DIR/warn.scene"
 warning="smallmlt: $DIR/warn.mtl:3: warning: 'Ka' changes nothing in these models (ignored; 2 lines)"
 check mtl_warning 0 "$warning" -- "$BIN" render "$DIR/warn.scene" --method pt --width 8 --height 8 --spp 1 --quiet --out "$DIR/warn.pfm"
 check budget_mtl_warning 0 "$warning" -- "$BIN" budget "$DIR/warn.scene" --depth 1
+# A texture map whose file is missing: an error naming the MTL line and
+# the file, from the render and the budget, and no image.
+printf 'newmtl grey\nKd 0.5 0.5 0.5\nmap_Kd -bm 1 nope.png\nnewmtl lamp\nKe 5 5 5\n' > "$DIR/notex.mtl"
+sed 's/dark.mtl/notex.mtl/' "$DIR/dark.obj" > "$DIR/notex.obj"
+sed 's/dark.obj/notex.obj/' "$DIR/dark.scene" > "$DIR/notex.scene"
+check texture_missing 1 "$DIR/notex.mtl:3: cannot read texture $DIR/nope.png: " -- "$BIN" render "$DIR/notex.scene" --method pt --width 8 --height 8 --spp 1 --out "$DIR/notex.png"
+absent texture_missing_no_file "$DIR/notex.png"
+check budget_texture_missing 1 "$DIR/notex.mtl:3: cannot read texture $DIR/nope.png: " -- "$BIN" budget "$DIR/notex.scene" --depth 1
 grep -v lamp "$DIR/dark.obj" > "$DIR/unlit.obj"
 sed 's/dark.obj/unlit.obj/' "$DIR/dark.scene" > "$DIR/unlit.scene"
 check no_light 1 "unlit.scene: no emissive triangle" -- "$BIN" render "$DIR/unlit.scene" --out "$DIR/unlit.png"

@@ -1,35 +1,82 @@
 // The MTL reader as modelling tools write MTL files: every illum value and
 // the PBR directives become the Material of doc/scene-format.md's tables;
-// what no model shows warns once per file and directive; Blender's exports
-// load.
+// the texture maps go to the fields their model reads, each file loaded once
+// per kind; what no model shows warns once per file and directive;
+// Blender's exports load.
 #include "base/error.hpp"
 #include "scene/material.hpp"
 #include "scene/mtl_models.hpp"
 #include "test_support.hpp"
 
 #include <gtest/gtest.h>
+#include <stb/stb_image_write.h>
 
 #include <cmath>
+#include <cstdint>
 
 using namespace smallmlt;
 
 namespace {
 
-// Strips "DIR/" from the start of each warning.
-void relative(std::vector<std::string>& warnings, const std::string& dir) {
-    for (std::string& w : warnings)
+// Strips "DIR/" from the start of each warning and each texture's file.
+void relative(Scene& s, const std::string& dir) {
+    for (std::string& w : s.warnings)
         if (w.rfind(dir + "/", 0) == 0) w = w.substr(dir.size() + 1);
+    for (SceneTexture& t : s.textures)
+        if (t.file.rfind(dir + "/", 0) == 0) t.file = t.file.substr(dir.size() + 1);
 }
 
-// Writes `text` as m.mtl in a fresh directory and reads it; its warnings
-// name m.mtl relative to that directory.
-Scene read_mtl(const std::string& name, const std::string& text) {
+// An image the test writes beside its MTL file.
+struct Png {
+    const char* file;
+    int width, height, channels; // 1 grey, 2 grey and alpha, 3 RGB, 4 RGBA
+};
+
+// The test images' byte of channel c at pixel i (top row first).
+std::uint8_t pattern(int i, int c) {
+    return std::uint8_t(40 * c + 7 * i + 3);
+}
+
+// Pixel i of an RGBA test image as a texel: R in the low byte.
+std::uint32_t rgba_texel(int i) {
+    return std::uint32_t(pattern(i, 0)) | std::uint32_t(pattern(i, 1)) << 8 |
+           std::uint32_t(pattern(i, 2)) << 16 | std::uint32_t(pattern(i, 3)) << 24;
+}
+
+void write_png(const std::string& path, const Png& p) {
+    std::vector<std::uint8_t> px(std::size_t(p.width) * p.height * p.channels);
+    for (int i = 0; i < p.width * p.height; ++i)
+        for (int c = 0; c < p.channels; ++c)
+            px[std::size_t(i) * p.channels + c] = pattern(i, c);
+    if (!stbi_write_png(path.c_str(), p.width, p.height, p.channels, px.data(),
+                        p.width * p.channels))
+        throw std::runtime_error("cannot write " + path);
+}
+
+// Writes `text` as m.mtl in a fresh directory, with the images `pngs`
+// beside it, and reads it; its warnings and textures name their files
+// relative to that directory.
+Scene read_mtl(const std::string& name, const std::string& text,
+               std::initializer_list<Png> pngs = {}) {
     std::string dir = test::scratch_dir("mtl-" + name);
     test::write_file(dir + "/m.mtl", text);
+    for (const Png& p : pngs)
+        write_png(dir + "/" + p.file, p);
     Scene s;
     load_mtl(dir + "/m.mtl", s);
-    relative(s.warnings, dir);
+    relative(s, dir);
     return s;
+}
+
+// The texture fields of a Material, and their names for messages.
+const std::pair<u32 Material::*, const char*> kTexFields[] = {{&Material::kd_tex, "kd_tex"},
+                                                              {&Material::ks_tex, "ks_tex"},
+                                                              {&Material::rough_tex, "rough_tex"},
+                                                              {&Material::alpha_tex, "alpha_tex"}};
+
+void expect_no_textures(const Material& m, const std::string& what) {
+    for (const auto& [field, name] : kTexFields)
+        EXPECT_EQ(m.*field, TEX_NONE) << what << ": " << name;
 }
 
 std::string str(Vec3 v) {
@@ -159,6 +206,8 @@ TEST_P(MtlModels, BecomeTheMaterialOfTheirRow) {
     expect_rgb(m.eta, c.eta, "eta");
     expect_rgb(m.k, c.k, "k");
     EXPECT_EQ(m.emissive, 0u);
+    expect_no_textures(m, c.name);
+    EXPECT_TRUE(s.textures.empty());
 }
 
 INSTANTIATE_TEST_SUITE_P(Rows, MtlModels, ::testing::ValuesIn(kModels),
@@ -192,54 +241,65 @@ struct IgnoredCase {
     const char* context;   // lines after newmtl, each ending in \n
     const char* line;      // the directive's line
     const char* directive; // as the warning names it
-    const char* constant;  // a texture map's: the constant used instead
+    const char* constant;  // a map that is not read: the constant used instead
+    const char* why;       // and why it is not read
 };
 
 std::string changes_nothing(const std::string& d) {
     return "'" + d + "' changes nothing in these models";
 }
 
-std::string not_read(const std::string& map, const std::string& constant) {
-    return "'" + map + "' is not read yet (textures are not supported): the constant '" + constant +
+std::string not_read(const std::string& map, const std::string& constant, const std::string& why) {
+    return "'" + map + "' is not read (" + why + "): the constant '" + constant +
            "' is used, or its default";
 }
 
 const IgnoredCase kIgnored[] = {
-    {"ka", "illum 1\n", "Ka 1 1 1", "Ka", nullptr},
-    {"map_ka", "illum 1\n", "map_Ka -s 1 1 1 a.png", "map_Ka", nullptr},
-    {"tf", "illum 1\n", "Tf 1 1 1", "Tf", nullptr},
-    {"ni_on_diffuse", "illum 1\n", "Ni 1.45", "Ni", nullptr},
-    {"ni_on_a_mirror", "Ks 1 1 1\nillum 3\n", "Ni 1.45", "Ni", nullptr},
-    {"ni_on_a_metal", "Kd 1 1 1\nPm 1\n", "Ni 1.45", "Ni", nullptr},
-    {"ns_on_diffuse", "illum 1\n", "Ns 250", "Ns", nullptr},
-    {"ns_beside_pr", "Ks 0.5 0.5 0.5\nPr 0.5\nillum 2\n", "Ns 250", "Ns", nullptr},
-    {"pr_on_diffuse", "illum 0\n", "Pr 0.5", "Pr", nullptr},
-    {"ks_on_diffuse", "illum 1\n", "Ks 0.5 0.5 0.5", "Ks", nullptr},
-    {"ks_on_a_dielectric", "Ni 1.5\nillum 7\n", "Ks 0.5 0.5 0.5", "Ks", nullptr},
-    {"ks_on_a_metal", "Kd 1 1 1\nPm 1\n", "Ks 0.5 0.5 0.5", "Ks", nullptr},
-    {"kd_on_a_dielectric", "Ni 1.5\nillum 7\n", "Kd 0.5 0.5 0.5", "Kd", nullptr},
-    {"kd_on_a_mirror", "Ks 1 1 1\nillum 5\n", "Kd 0.5 0.5 0.5", "Kd", nullptr},
-    {"pm_on_a_dielectric", "Ni 1.5\nillum 7\n", "Pm 1", "Pm", nullptr},
-    {"pc", "illum 1\n", "Pc 0.5", "Pc", nullptr},
-    {"pcr_under_a_coat", "Pc 0.5\n", "Pcr 0.03", "Pcr", nullptr},
-    {"ps", "illum 1\n", "Ps 0.5", "Ps", nullptr},
-    {"aniso", "illum 1\n", "aniso 0.5", "aniso", nullptr},
-    {"anisor_of_anisotropy", "aniso 0.5\n", "anisor 0.25", "anisor", nullptr},
-    {"sharpness", "illum 1\n", "sharpness 60", "sharpness", nullptr},
-    {"map_bump", "illum 1\n", "map_Bump -bm 1.000000 normal.png", "map_Bump", nullptr},
-    {"bump", "illum 1\n", "bump -bm 0.5 height.png", "bump", nullptr},
-    {"norm", "illum 1\n", "norm normal.png", "norm", nullptr},
-    {"disp", "illum 1\n", "disp height.png", "disp", nullptr},
-    {"decal", "illum 1\n", "decal mask.png", "decal", nullptr},
-    {"refl", "illum 1\n", "refl -type sphere sky.png", "refl", nullptr},
-    {"map_ps", "illum 1\n", "map_Ps sheen.png", "map_Ps", nullptr},
-    {"map_kd", "illum 1\n", "map_Kd -o 0.5 0.5 0 wood.png", "map_Kd", "Kd"},
-    {"map_ks", "Ks 0.5 0.5 0.5\nillum 2\n", "map_Ks spec.png", "map_Ks", "Ks"},
-    {"map_ke", "illum 1\n", "map_Ke glow.png", "map_Ke", "Ke"},
-    {"map_ns", "Ks 0.5 0.5 0.5\nillum 2\n", "map_Ns gloss.png", "map_Ns", "Ns"},
-    {"map_pr", "Ks 0.5 0.5 0.5\nillum 2\n", "map_Pr -s 2 2 1 rough.png", "map_Pr", "Pr"},
-    {"map_pm", "illum 1\n", "map_Pm metal.png", "map_Pm", "Pm"},
-    {"map_d", "illum 1\n", "map_d -imfchan m alpha.png", "map_d", "d"},
+    {"ka", "illum 1\n", "Ka 1 1 1", "Ka", nullptr, nullptr},
+    {"map_ka", "illum 1\n", "map_Ka -s 1 1 1 a.png", "map_Ka", nullptr, nullptr},
+    {"tf", "illum 1\n", "Tf 1 1 1", "Tf", nullptr, nullptr},
+    {"ni_on_diffuse", "illum 1\n", "Ni 1.45", "Ni", nullptr, nullptr},
+    {"ni_on_a_mirror", "Ks 1 1 1\nillum 3\n", "Ni 1.45", "Ni", nullptr, nullptr},
+    {"ni_on_a_metal", "Kd 1 1 1\nPm 1\n", "Ni 1.45", "Ni", nullptr, nullptr},
+    {"ns_on_diffuse", "illum 1\n", "Ns 250", "Ns", nullptr, nullptr},
+    {"ns_beside_pr", "Ks 0.5 0.5 0.5\nPr 0.5\nillum 2\n", "Ns 250", "Ns", nullptr, nullptr},
+    {"pr_on_diffuse", "illum 0\n", "Pr 0.5", "Pr", nullptr, nullptr},
+    {"ks_on_diffuse", "illum 1\n", "Ks 0.5 0.5 0.5", "Ks", nullptr, nullptr},
+    {"ks_on_a_dielectric", "Ni 1.5\nillum 7\n", "Ks 0.5 0.5 0.5", "Ks", nullptr, nullptr},
+    {"ks_on_a_metal", "Kd 1 1 1\nPm 1\n", "Ks 0.5 0.5 0.5", "Ks", nullptr, nullptr},
+    {"kd_on_a_dielectric", "Ni 1.5\nillum 7\n", "Kd 0.5 0.5 0.5", "Kd", nullptr, nullptr},
+    {"kd_on_a_mirror", "Ks 1 1 1\nillum 5\n", "Kd 0.5 0.5 0.5", "Kd", nullptr, nullptr},
+    {"pm_on_a_dielectric", "Ni 1.5\nillum 7\n", "Pm 1", "Pm", nullptr, nullptr},
+    {"pc", "illum 1\n", "Pc 0.5", "Pc", nullptr, nullptr},
+    {"pcr_under_a_coat", "Pc 0.5\n", "Pcr 0.03", "Pcr", nullptr, nullptr},
+    {"ps", "illum 1\n", "Ps 0.5", "Ps", nullptr, nullptr},
+    {"aniso", "illum 1\n", "aniso 0.5", "aniso", nullptr, nullptr},
+    {"anisor_of_anisotropy", "aniso 0.5\n", "anisor 0.25", "anisor", nullptr, nullptr},
+    {"sharpness", "illum 1\n", "sharpness 60", "sharpness", nullptr, nullptr},
+    {"map_bump", "illum 1\n", "map_Bump -bm 1.000000 normal.png", "map_Bump", nullptr, nullptr},
+    {"bump", "illum 1\n", "bump -bm 0.5 height.png", "bump", nullptr, nullptr},
+    {"norm", "illum 1\n", "norm normal.png", "norm", nullptr, nullptr},
+    {"disp", "illum 1\n", "disp height.png", "disp", nullptr, nullptr},
+    {"decal", "illum 1\n", "decal mask.png", "decal", nullptr, nullptr},
+    {"refl", "illum 1\n", "refl -type sphere sky.png", "refl", nullptr, nullptr},
+    {"map_ps", "illum 1\n", "map_Ps sheen.png", "map_Ps", nullptr, nullptr},
+    // Maps where the model has nothing they replace: their files are not
+    // read (none of these exists).
+    {"map_kd_on_a_mirror", "Ks 1 1 1\nillum 3\n", "map_Kd -o 0.5 0.5 0 wood.png", "map_Kd", nullptr,
+     nullptr},
+    {"map_kd_on_a_dielectric", "Ni 1.5\nillum 7\n", "map_Kd wood.png", "map_Kd", nullptr, nullptr},
+    {"map_ks_on_diffuse", "illum 1\n", "map_Ks spec.png", "map_Ks", nullptr, nullptr},
+    {"map_ks_on_a_metal", "Kd 1 1 1\nPm 1\n", "map_Ks spec.png", "map_Ks", nullptr, nullptr},
+    {"map_ks_on_a_dielectric", "Ni 1.5\nillum 7\n", "map_Ks spec.png", "map_Ks", nullptr, nullptr},
+    {"map_pr_on_diffuse", "illum 1\n", "map_Pr -s 2 2 1 rough.png", "map_Pr", nullptr, nullptr},
+    {"map_d_on_a_dielectric", "Ni 1.5\nillum 7\n", "map_d -imfchan m alpha.png", "map_d", nullptr,
+     nullptr},
+    {"map_d_on_an_emitter", "Ke 1 1 1\n", "map_d alpha.png", "map_d", nullptr, nullptr},
+    // Maps of a value no model takes a texture for.
+    {"map_ke", "illum 1\n", "map_Ke glow.png", "map_Ke", "Ke", "emission is not textured"},
+    {"map_ns", "Ks 0.5 0.5 0.5\nillum 2\n", "map_Ns gloss.png", "map_Ns", "Ns",
+     "the roughness map is map_Pr"},
+    {"map_pm", "illum 1\n", "map_Pm -bm 1 metal.png", "map_Pm", "Pm", "a material is metal or not"},
 };
 
 void PrintTo(const IgnoredCase& c, std::ostream* os) {
@@ -265,7 +325,7 @@ TEST_P(MtlIgnored, WarnsOncePerFileAtTheFirstLineWithTheCount) {
         read_mtl(std::string("ignored-") + c.name, "newmtl a\n" + block + "newmtl b\n" + block);
     ASSERT_EQ(s.materials.size(), 2u);
     std::string text =
-        c.constant ? not_read(c.directive, c.constant) : changes_nothing(c.directive);
+        c.constant ? not_read(c.directive, c.constant, c.why) : changes_nothing(c.directive);
     std::string want = "m.mtl:" + std::to_string(2 + lines_in(c.context)) + ": warning: " + text +
                        " (ignored; 2 lines)";
     std::vector<std::string> about;
@@ -273,6 +333,10 @@ TEST_P(MtlIgnored, WarnsOncePerFileAtTheFirstLineWithTheCount) {
         if (w.find("'" + std::string(c.directive) + "'") != std::string::npos) about.push_back(w);
     ASSERT_EQ(about.size(), 1u) << (s.warnings.empty() ? "no warning" : s.warnings[0]);
     EXPECT_EQ(about[0], want);
+    // Nothing is loaded for a line that changes nothing.
+    EXPECT_TRUE(s.textures.empty());
+    for (const Material& m : s.materials)
+        expect_no_textures(m, c.name);
 }
 
 INSTANTIATE_TEST_SUITE_P(Directives, MtlIgnored, ::testing::ValuesIn(kIgnored),
@@ -294,7 +358,7 @@ TEST(MtlWarnings, OpaqueDoesNotWarnAndPartialTransparencyDoes) {
     EXPECT_TRUE(read_mtl("d-1", "newmtl m\nd 1.000000\n").warnings.empty());
     EXPECT_TRUE(read_mtl("tr-0", "newmtl m\nTr 0.000000\n").warnings.empty());
     const std::string rest = "': partial transparency is not modelled and the surface renders "
-                             "opaque; a cut-out through map_d will come with textures (1 line)";
+                             "opaque (map_d makes a cut-out) (1 line)";
     Scene d = read_mtl("d-half", "newmtl m\nKd 1 1 1\nd 0.5\n");
     ASSERT_EQ(d.warnings.size(), 1u);
     EXPECT_EQ(d.warnings[0], "m.mtl:3: warning: 'd 0.5" + rest);
@@ -332,15 +396,15 @@ TEST(MtlWarnings, EachFileWarnsForItselfAndTheSceneKeepsTheWarnings) {
     test::write_file(dir + "/a.mtl", "newmtl lamp\nKa 1 1 1\nKe 1 1 1\n");
     test::write_file(dir + "/b.mtl", "# grey\nnewmtl grey\nKd 0.5 0.5 0.5\nKa 0 0 0\nKa 1 1 1\n");
     Scene s = load_scene(dir + "/s.scene");
-    relative(s.warnings, dir);
+    relative(s, dir);
     std::vector<std::string> want = {
         "a.mtl:2: warning: 'Ka' changes nothing in these models (ignored; 1 line)",
         "b.mtl:4: warning: 'Ka' changes nothing in these models (ignored; 2 lines)"};
     EXPECT_EQ(s.warnings, want);
 }
 
-// Also: the warnings of a file come in the order of their first lines,
-// whether found as the line is read (maps) or once its material is complete.
+// With the image it names: the base colour is the texture, the quad's
+// texture coordinates reach its two triangles.
 TEST(MtlBlender, DefaultExportOfBlender41LoadsAsRoughPlastic) {
     std::string dir = test::scratch_dir("mtl-blender41");
     test::write_file(dir + "/s.scene", "camera 0 1 3  0 1 0  0 1 0  40\nmesh m.obj\n");
@@ -354,8 +418,9 @@ TEST(MtlBlender, DefaultExportOfBlender41LoadsAsRoughPlastic) {
                                      "0.000000 0.000000\nNi 1.450000\nd 1.000000\nillum 2\n"
                                      "map_Kd texture.png\n");
     test::write_file(dir + "/lamp.mtl", "newmtl lamp\nKe 1 1 1\n");
+    write_png(dir + "/texture.png", {"texture.png", 4, 3, 3});
     Scene s = load_scene(dir + "/s.scene");
-    relative(s.warnings, dir);
+    relative(s, dir);
     ASSERT_EQ(s.material_names[0], "Material");
     const Material& m = s.materials[0];
     EXPECT_EQ(m.type, u32(MAT_ROUGH_PLASTIC));
@@ -363,12 +428,31 @@ TEST(MtlBlender, DefaultExportOfBlender41LoadsAsRoughPlastic) {
     expect_rgb(m.ks, kHalf, "ks");
     EXPECT_NEAR(m.ior, 1.45f, 1e-6);
     EXPECT_NEAR(m.alpha, 0.25f, 1e-6); // roughness 0.5, Blender's default
+    ASSERT_EQ(s.textures.size(), 1u);
+    EXPECT_EQ(m.kd_tex, 0u);
+    EXPECT_EQ(m.ks_tex, TEX_NONE);
+    EXPECT_EQ(m.rough_tex, TEX_NONE);
+    EXPECT_EQ(m.alpha_tex, TEX_NONE);
+    EXPECT_EQ(s.textures[0].file, "texture.png");
+    EXPECT_EQ(s.textures[0].kind, TextureKind::Colour);
+    EXPECT_EQ(s.textures[0].width, 4);
+    EXPECT_EQ(s.textures[0].height, 3);
+    ASSERT_EQ(s.material_names[1], "lamp");
+    expect_no_textures(s.materials[1], "lamp");
     std::vector<std::string> want = {
-        "m.mtl:6: warning: 'Ka' changes nothing in these models (ignored; 1 line)",
-        "m.mtl:12: warning: 'map_Kd' is not read yet (textures are not supported): the constant "
-        "'Kd' is used, or its default (ignored; 1 line)"};
+        "m.mtl:6: warning: 'Ka' changes nothing in these models (ignored; 1 line)"};
     EXPECT_EQ(s.warnings, want);
-    EXPECT_EQ(s.triangles.size(), 3u);
+    ASSERT_EQ(s.triangles.size(), 3u);
+    // Here vt k is vertex k's x and y; the lamp's face gives none.
+    for (int t = 0; t < 2; ++t)
+        for (int k = 0; k < 3; ++k) {
+            EXPECT_EQ(s.triangles[t].uv[k][0], s.triangles[t].v[k].x) << t << " " << k;
+            EXPECT_EQ(s.triangles[t].uv[k][1], s.triangles[t].v[k].y) << t << " " << k;
+        }
+    for (int k = 0; k < 3; ++k) {
+        EXPECT_EQ(s.triangles[2].uv[k][0], 0.0f);
+        EXPECT_EQ(s.triangles[2].uv[k][1], 0.0f);
+    }
 }
 
 TEST(MtlBlender, PbrExportOfBlender4Loads) {
@@ -386,17 +470,368 @@ TEST(MtlBlender, PbrExportOfBlender4Loads) {
                        "Ni 1.450000\nd 1.000000\nillum 2\nPm 0.000000\nPs 0.000000\n" // 26
                        "Pc 0.000000\nPcr 0.030000\naniso 0.000000\nanisor 0.000000\n" // 30
                        "map_Kd paint.png\n"                                           // 31
-                       "map_Pr -s 2.000000 2.000000 1.000000 rough.png\n");           // 32
+                       "map_Pr -s 2.000000 2.000000 1.000000 rough.png\n",            // 32
+                       {{"paint.png", 2, 2, 3}, {"rough.png", 1, 2, 1}});
     ASSERT_EQ(s.materials.size(), 2u);
     const Material& metal = s.materials[0];
     EXPECT_EQ(metal.type, u32(MAT_ROUGH_CONDUCTOR));
     expect_rgb(metal.ks, {0.8f, 0.5f, 0.2f}, "metal ks");
     EXPECT_NEAR(metal.alpha, 0.09f, 1e-6);
-    EXPECT_EQ(s.materials[1].type, u32(MAT_PLASTIC)); // its roughness is in the map
+    expect_no_textures(metal, "Metal");
+    // Its roughness is in the map: rough, of the least alpha where no
+    // constant says more.
+    const Material& painted = s.materials[1];
+    EXPECT_EQ(painted.type, u32(MAT_ROUGH_PLASTIC));
+    EXPECT_NEAR(painted.alpha, kSmoothAlpha, 1e-9);
+    expect_rgb(painted.ks, kHalf, "painted ks");
+    EXPECT_NEAR(painted.ior, 1.45f, 1e-6);
+    ASSERT_EQ(s.textures.size(), 2u);
+    ASSERT_LT(painted.kd_tex, 2u);
+    ASSERT_LT(painted.rough_tex, 2u);
+    EXPECT_EQ(s.textures[painted.kd_tex].file, "paint.png");
+    EXPECT_EQ(s.textures[painted.kd_tex].kind, TextureKind::Colour);
+    EXPECT_EQ(s.textures[painted.rough_tex].file, "rough.png");
+    EXPECT_EQ(s.textures[painted.rough_tex].kind, TextureKind::Data);
+    EXPECT_EQ(s.textures[painted.rough_tex].width, 1);
+    EXPECT_EQ(s.textures[painted.rough_tex].height, 2);
+    EXPECT_EQ(painted.ks_tex, TEX_NONE);
+    EXPECT_EQ(painted.alpha_tex, TEX_NONE);
     std::vector<std::string> want = {
         "m.mtl:6: warning: 'Ks' changes nothing in these models (ignored; 1 line)",
-        "m.mtl:8: warning: 'Ni' changes nothing in these models (ignored; 1 line)",
-        "m.mtl:31: warning: " + not_read("map_Kd", "Kd") + " (ignored; 1 line)",
-        "m.mtl:32: warning: " + not_read("map_Pr", "Pr") + " (ignored; 1 line)"};
+        "m.mtl:8: warning: 'Ni' changes nothing in these models (ignored; 1 line)"};
     EXPECT_EQ(s.warnings, want);
+}
+
+namespace {
+
+// A texture map on a model: the Material field that takes the texture (or
+// none: the map changes nothing there, with a warning), how its texels are
+// read, and the model the material becomes.
+enum class Field { None, Kd, Ks, Rough, Alpha };
+
+struct MapCase {
+    const char* name;
+    const char* context; // lines after "newmtl m", each ending in \n
+    const char* map;     // the directive; its line is "MAP tex.png"
+    Field field;
+    TextureKind kind;
+    u32 type;
+    float alpha;
+};
+
+const char* const kDiffuse = "Kd 0.2 0.4 0.6\nillum 1\n";
+const char* const kDiffuse2 = "Kd 0.2 0.4 0.6\nillum 2\n"; // illum 2 without Ks
+const char* const kPlastic = "Kd 0.2 0.4 0.6\nKs 0.5 0.5 0.5\nillum 2\n";
+const char* const kMirror = "Ks 0.9 0.8 0.7\nillum 3\n";
+const char* const kMetal = "Kd 0.8 0.6 0.2\nPm 1\n";
+const char* const kMetal3 = "Kd 0.8 0.6 0.2\nPm 1\nillum 3\n"; // Pm before illum 3's Ks
+const char* const kGlass = "Ni 1.5\nillum 7\n";
+const char* const kLamp = "Kd 0.5 0.5 0.5\nKe 2 2 2\n";
+const char* const kDarkLamp = "Kd 0.5 0.5 0.5\nKe 0 0 0\n"; // not an emitter
+
+constexpr TextureKind kColourTex = TextureKind::Colour, kDataTex = TextureKind::Data,
+                      kMaskTex = TextureKind::Mask;
+constexpr float kA = kSmoothAlpha;
+
+const MapCase kMaps[] = {
+    {"kd_on_diffuse", kDiffuse, "map_Kd", Field::Kd, kColourTex, MAT_DIFFUSE, 0},
+    {"kd_on_illum2_without_ks", kDiffuse2, "map_Kd", Field::Kd, kColourTex, MAT_DIFFUSE, 0},
+    {"kd_on_plastic", kPlastic, "map_Kd", Field::Kd, kColourTex, MAT_PLASTIC, 0},
+    {"kd_on_an_emitter", kLamp, "map_Kd", Field::Kd, kColourTex, MAT_DIFFUSE, 0},
+    {"kd_on_a_mirror", kMirror, "map_Kd", Field::None, kColourTex, MAT_CONDUCTOR, 0},
+    {"kd_on_a_metal_is_its_reflectance", kMetal, "map_Kd", Field::Ks, kColourTex, MAT_CONDUCTOR, 0},
+    {"kd_on_a_metal_of_illum3", kMetal3, "map_Kd", Field::Ks, kColourTex, MAT_CONDUCTOR, 0},
+    {"kd_on_a_dielectric", kGlass, "map_Kd", Field::None, kColourTex, MAT_DIELECTRIC, 0},
+    {"ks_on_diffuse", kDiffuse, "map_Ks", Field::None, kColourTex, MAT_DIFFUSE, 0},
+    {"ks_on_illum2_without_ks", kDiffuse2, "map_Ks", Field::None, kColourTex, MAT_DIFFUSE, 0},
+    {"ks_on_plastic", kPlastic, "map_Ks", Field::Ks, kColourTex, MAT_PLASTIC, 0},
+    {"ks_on_a_mirror", kMirror, "map_Ks", Field::Ks, kColourTex, MAT_CONDUCTOR, 0},
+    {"ks_on_a_metal", kMetal, "map_Ks", Field::None, kColourTex, MAT_CONDUCTOR, 0},
+    {"ks_on_a_dielectric", kGlass, "map_Ks", Field::None, kColourTex, MAT_DIELECTRIC, 0},
+    {"pr_on_diffuse", kDiffuse, "map_Pr", Field::None, kDataTex, MAT_DIFFUSE, 0},
+    {"pr_makes_plastic_rough", kPlastic, "map_Pr", Field::Rough, kDataTex, MAT_ROUGH_PLASTIC, kA},
+    {"pr_makes_plastic_of_pr0_rough", "Kd 0.2 0.4 0.6\nKs 0.5 0.5 0.5\nPr 0\nillum 2\n", "map_Pr",
+     Field::Rough, kDataTex, MAT_ROUGH_PLASTIC, kA},
+    {"pr_raises_a_smooth_pr_to_the_least_alpha",
+     "Kd 0.2 0.4 0.6\nKs 0.5 0.5 0.5\nPr 0.03\nillum 2\n", "map_Pr", Field::Rough, kDataTex,
+     MAT_ROUGH_PLASTIC, kA},
+    {"pr_keeps_the_alpha_of_ns", "Kd 0.2 0.4 0.6\nKs 0.5 0.5 0.5\nNs 250\nillum 2\n", "map_Pr",
+     Field::Rough, kDataTex, MAT_ROUGH_PLASTIC, 0.25f},
+    {"pr_makes_a_mirror_rough", kMirror, "map_Pr", Field::Rough, kDataTex, MAT_ROUGH_CONDUCTOR, kA},
+    {"pr_makes_a_metal_rough", kMetal, "map_Pr", Field::Rough, kDataTex, MAT_ROUGH_CONDUCTOR, kA},
+    {"pr_makes_a_dielectric_rough", kGlass, "map_Pr", Field::Rough, kDataTex, MAT_ROUGH_DIELECTRIC,
+     kA},
+    {"d_on_diffuse", kDiffuse, "map_d", Field::Alpha, kMaskTex, MAT_DIFFUSE, 0},
+    {"d_on_plastic", kPlastic, "map_d", Field::Alpha, kMaskTex, MAT_PLASTIC, 0},
+    {"d_on_a_mirror", kMirror, "map_d", Field::Alpha, kMaskTex, MAT_CONDUCTOR, 0},
+    {"d_on_a_metal", kMetal, "map_d", Field::Alpha, kMaskTex, MAT_CONDUCTOR, 0},
+    {"d_on_a_dielectric", kGlass, "map_d", Field::None, kMaskTex, MAT_DIELECTRIC, 0},
+    {"d_on_an_emitter", kLamp, "map_d", Field::None, kMaskTex, MAT_DIFFUSE, 0},
+    {"d_on_an_emitting_metal", "Kd 0.8 0.6 0.2\nKe 1 1 1\nPm 1\n", "map_d", Field::None, kMaskTex,
+     MAT_CONDUCTOR, 0},
+    {"d_on_ke_0_is_no_emitter", kDarkLamp, "map_d", Field::Alpha, kMaskTex, MAT_DIFFUSE, 0},
+};
+
+void PrintTo(const MapCase& c, std::ostream* os) {
+    *os << c.name;
+}
+
+class MtlMaps : public ::testing::TestWithParam<MapCase> {};
+
+} // namespace
+
+// The image is 3x2 RGBA: each kind keeps its bytes as in the file.
+TEST_P(MtlMaps, GiveTheirTextureToTheFieldOfTheirRow) {
+    const MapCase& c = GetParam();
+    const std::string line = std::string(c.map) + " tex.png\n";
+    Scene s = read_mtl(std::string("map-") + c.name, std::string("newmtl m\n") + c.context + line,
+                       {{"tex.png", 3, 2, 4}});
+    ASSERT_EQ(s.materials.size(), 1u);
+    const Material& m = s.materials[0];
+    EXPECT_EQ(m.type, c.type);
+    EXPECT_NEAR(m.alpha, c.alpha, 1e-9);
+    for (int f = 0; f < 4; ++f) {
+        const auto& [field, name] = kTexFields[f];
+        EXPECT_EQ(m.*field, int(c.field) == f + 1 ? 0u : TEX_NONE) << name;
+    }
+    if (c.field == Field::None) {
+        EXPECT_TRUE(s.textures.empty());
+        std::vector<std::string> want = {"m.mtl:" + std::to_string(2 + lines_in(c.context)) +
+                                         ": warning: " + changes_nothing(c.map) +
+                                         " (ignored; 1 line)"};
+        EXPECT_EQ(s.warnings, want);
+        return;
+    }
+    EXPECT_TRUE(s.warnings.empty()) << s.warnings[0];
+    ASSERT_EQ(s.textures.size(), 1u);
+    const SceneTexture& t = s.textures[0];
+    EXPECT_EQ(t.file, "tex.png");
+    EXPECT_EQ(t.kind, c.kind);
+    EXPECT_EQ(t.width, 3);
+    EXPECT_EQ(t.height, 2);
+    EXPECT_EQ(t.halvings, 0);
+    ASSERT_EQ(t.texels.size(), 6u);
+    for (int i = 0; i < 6; ++i)
+        EXPECT_EQ(t.texels[i], rgba_texel(i)) << "texel " << i;
+}
+
+INSTANTIATE_TEST_SUITE_P(Rows, MtlMaps, ::testing::ValuesIn(kMaps),
+                         [](const auto& info) { return std::string(info.param.name); });
+
+// All four maps on one plastic, each of its own file (of its own size):
+// each field holds the index of its own file's texture.
+TEST(MtlTextures, EachMapHoldsTheIndexOfItsOwnFile) {
+    Scene s = read_mtl(
+        "four-maps",
+        "newmtl m\nKd 0.2 0.4 0.6\nKs 0.5 0.5 0.5\nillum 2\nmap_Kd kd.png\n"
+        "map_Ks ks.png\nmap_Pr pr.png\nmap_d d.png\n",
+        {{"kd.png", 1, 1, 3}, {"ks.png", 2, 1, 3}, {"pr.png", 3, 1, 1}, {"d.png", 4, 1, 4}});
+    ASSERT_EQ(s.materials.size(), 1u);
+    EXPECT_TRUE(s.warnings.empty()) << s.warnings[0];
+    const Material& m = s.materials[0];
+    EXPECT_EQ(m.type, u32(MAT_ROUGH_PLASTIC));
+    ASSERT_EQ(s.textures.size(), 4u);
+    struct Want {
+        u32 index;
+        const char* file;
+        TextureKind kind;
+        int width;
+    } want[] = {{m.kd_tex, "kd.png", kColourTex, 1},
+                {m.ks_tex, "ks.png", kColourTex, 2},
+                {m.rough_tex, "pr.png", kDataTex, 3},
+                {m.alpha_tex, "d.png", kMaskTex, 4}};
+    for (const Want& w : want) {
+        ASSERT_LT(w.index, 4u) << w.file;
+        const SceneTexture& t = s.textures[w.index];
+        EXPECT_EQ(t.file, w.file);
+        EXPECT_EQ(t.kind, w.kind) << w.file;
+        EXPECT_EQ(t.width, w.width) << w.file;
+        EXPECT_EQ(t.height, 1) << w.file;
+    }
+}
+
+// A diffuse base, a plastic base, a metal's reflectance and a plastic coat
+// are all colours: one texture for the file, however its options differ.
+TEST(MtlTextures, AFileNamedBySeveralMaterialsAsOneKindIsLoadedOnce) {
+    Scene s = read_mtl("shared",
+                       "newmtl a\nKd 0.5 0.5 0.5\nmap_Kd wood.png\n"
+                       "newmtl b\nKs 0.5 0.5 0.5\nillum 2\nmap_Kd -s 2 2 1 wood.png\n"
+                       "newmtl c\nKd 1 1 1\nPm 1\nmap_Kd wood.png\n"
+                       "newmtl d\nKd 0.5 0.5 0.5\nKs 0.5 0.5 0.5\nillum 2\nmap_Ks wood.png\n",
+                       {{"wood.png", 2, 2, 3}});
+    ASSERT_EQ(s.materials.size(), 4u);
+    ASSERT_EQ(s.textures.size(), 1u);
+    EXPECT_EQ(s.textures[0].file, "wood.png");
+    EXPECT_EQ(s.textures[0].kind, kColourTex);
+    EXPECT_EQ(s.materials[0].kd_tex, 0u);
+    EXPECT_EQ(s.materials[1].kd_tex, 0u);
+    EXPECT_EQ(s.materials[2].ks_tex, 0u);
+    EXPECT_EQ(s.materials[3].ks_tex, 0u);
+    EXPECT_TRUE(s.warnings.empty()) << s.warnings[0];
+}
+
+// One file as a colour, as data and as a mask: three textures, whichever
+// material names it again.
+TEST(MtlTextures, AFileOfSeveralKindsIsLoadedOncePerKind) {
+    const std::string block =
+        "Kd 0.5 0.5 0.5\nKs 0.5 0.5 0.5\nillum 2\nmap_Kd t.png\nmap_Pr t.png\nmap_d t.png\n";
+    Scene s = read_mtl("kinds", "newmtl a\n" + block + "newmtl b\n" + block, {{"t.png", 2, 1, 4}});
+    ASSERT_EQ(s.materials.size(), 2u);
+    ASSERT_EQ(s.textures.size(), 3u);
+    const Material& a = s.materials[0];
+    ASSERT_LT(a.kd_tex, 3u);
+    ASSERT_LT(a.rough_tex, 3u);
+    ASSERT_LT(a.alpha_tex, 3u);
+    EXPECT_EQ(s.textures[a.kd_tex].kind, kColourTex);
+    EXPECT_EQ(s.textures[a.rough_tex].kind, kDataTex);
+    EXPECT_EQ(s.textures[a.alpha_tex].kind, kMaskTex);
+    for (const SceneTexture& t : s.textures)
+        EXPECT_EQ(t.file, "t.png");
+    const Material& b = s.materials[1];
+    EXPECT_EQ(b.kd_tex, a.kd_tex);
+    EXPECT_EQ(b.rough_tex, a.rough_tex);
+    EXPECT_EQ(b.alpha_tex, a.alpha_tex);
+}
+
+// Options before the file name are skipped, whatever their number of
+// values; a name with a folder is relative to the MTL file's folder too.
+TEST(MtlTextures, TheFileIsTheLastTokenAfterTheOptions) {
+    std::string dir = test::scratch_dir("mtl-options");
+    test::write_file(
+        dir + "/m.mtl",
+        "newmtl a\nmap_Kd -bm 1 -s 1 1 1 tex.png\n"
+        "newmtl b\nKs 0.5 0.5 0.5\nillum 2\nmap_Ks -o 0.5 0.5 0 -clamp on maps/ks.png\n"
+        "newmtl c\nKs 0.5 0.5 0.5\nillum 2\nmap_Pr -imfchan r -mm 0 1 tex.png\n");
+    std::string cmd = "mkdir -p '" + dir + "/maps'";
+    ASSERT_EQ(std::system(cmd.c_str()), 0);
+    write_png(dir + "/tex.png", {"tex.png", 3, 1, 3});
+    write_png(dir + "/maps/ks.png", {"ks.png", 1, 3, 3});
+    Scene s;
+    load_mtl(dir + "/m.mtl", s);
+    EXPECT_TRUE(s.warnings.empty()) << s.warnings[0];
+    ASSERT_EQ(s.materials.size(), 3u);
+    ASSERT_EQ(s.textures.size(), 3u);
+    ASSERT_LT(s.materials[0].kd_tex, 3u);
+    ASSERT_LT(s.materials[1].ks_tex, 3u);
+    ASSERT_LT(s.materials[2].rough_tex, 3u);
+    const SceneTexture& a = s.textures[s.materials[0].kd_tex];
+    const SceneTexture& b = s.textures[s.materials[1].ks_tex];
+    const SceneTexture& c = s.textures[s.materials[2].rough_tex];
+    EXPECT_EQ(a.file, dir + "/tex.png");
+    EXPECT_EQ(a.width, 3);
+    EXPECT_EQ(b.file, dir + "/maps/ks.png");
+    EXPECT_EQ(b.width, 1);
+    EXPECT_EQ(b.height, 3);
+    EXPECT_EQ(c.file, dir + "/tex.png");
+    EXPECT_EQ(c.kind, kDataTex);
+}
+
+// The MTL file in a folder of its own beside the scene: the texture is
+// found beside the MTL file, not beside the scene or the mesh.
+TEST(MtlTextures, FilesAreRelativeToTheMtlFile) {
+    std::string dir = test::scratch_dir("mtl-folder");
+    std::string cmd = "mkdir -p '" + dir + "/mats'";
+    ASSERT_EQ(std::system(cmd.c_str()), 0);
+    test::write_file(dir + "/s.scene", "camera 0 1 3  0 1 0  0 1 0  40\nmesh m.obj\n");
+    test::write_file(dir + "/m.obj", "mtllib mats/m.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\n"
+                                     "vt 1 0\nvt 0 1\nusemtl wood\nf 1/1 2/2 3/3\nusemtl lamp\n"
+                                     "f 1 3 2\n");
+    test::write_file(dir + "/mats/m.mtl", "newmtl wood\nmap_Kd wood.png\nnewmtl lamp\nKe 1 1 1\n");
+    write_png(dir + "/mats/wood.png", {"wood.png", 2, 3, 3});
+    Scene s = load_scene(dir + "/s.scene");
+    ASSERT_EQ(s.textures.size(), 1u);
+    EXPECT_EQ(s.textures[0].file, dir + "/mats/wood.png");
+    EXPECT_EQ(s.textures[0].width, 2);
+    EXPECT_EQ(s.textures[0].height, 3);
+    EXPECT_EQ(s.materials[0].kd_tex, 0u);
+}
+
+namespace {
+
+// The message of loading `text` as DIR/m.mtl (with the images `pngs`
+// beside it), with DIR/ taken out; "" if it loads.
+std::string mtl_error(const std::string& name, const std::string& text,
+                      std::initializer_list<Png> pngs = {}) {
+    std::string dir = test::scratch_dir("mtl-" + name);
+    test::write_file(dir + "/m.mtl", text);
+    for (const Png& p : pngs)
+        write_png(dir + "/" + p.file, p);
+    Scene s;
+    try {
+        load_mtl(dir + "/m.mtl", s);
+    } catch (const InputError& e) {
+        std::string msg = e.what();
+        for (std::size_t at; (at = msg.find(dir + "/")) != std::string::npos;)
+            msg.erase(at, dir.size() + 1);
+        return msg;
+    }
+    return "";
+}
+
+} // namespace
+
+// Each map the model reads: the error names the MTL file and the map's
+// line (not the material's), and the file as it was looked for.
+TEST(MtlTextures, AMissingTextureIsAnErrorAtItsLine) {
+    for (const char* map : {"map_Kd", "map_Ks", "map_Pr", "map_d"}) {
+        std::string msg = mtl_error(std::string("missing-") + map,
+                                    "newmtl ok\nKd 1 1 1\nmap_Kd ok.png\n"
+                                    "newmtl m\nKd 0.5 0.5 0.5\nKs 0.5 0.5 0.5\nillum 2\n" +
+                                        std::string(map) + " -s 1 1 1 nope.png\nNi 1.5\n",
+                                    {{"ok.png", 1, 1, 3}});
+        const std::string want = "m.mtl:8: cannot read texture nope.png: ";
+        EXPECT_EQ(msg.rfind(want, 0), 0u) << map << ": " << msg;
+        EXPECT_GT(msg.size(), want.size()) << map << ": no reason given";
+    }
+}
+
+TEST(MtlTextures, AFileThatIsNoImageIsAnError) {
+    std::string msg = mtl_error("not-an-image", "newmtl m\nKd 1 1 1\nmap_Kd m.mtl\n");
+    const std::string want = "m.mtl:3: cannot read texture m.mtl: ";
+    EXPECT_EQ(msg.rfind(want, 0), 0u) << msg;
+    EXPECT_GT(msg.size(), want.size()) << "no reason given";
+}
+
+// A mask of an image without alpha takes its first channel as alpha; with
+// alpha, its alpha. Colours and data keep the image's alpha, or opaque.
+TEST(MtlTextures, AMaskWithoutAlphaTakesTheFirstChannel) {
+    Scene s = read_mtl(
+        "mask-channels",
+        "newmtl grey\nmap_d grey.png\nnewmtl ga\nmap_d ga.png\n"
+        "newmtl rgb\nmap_d rgb.png\nnewmtl rgba\nmap_d rgba.png\n"
+        "newmtl colour\nmap_Kd rgb.png\n"
+        "newmtl data\nKs 0.5 0.5 0.5\nillum 2\nmap_Pr grey.png\n",
+        {{"grey.png", 2, 1, 1}, {"ga.png", 2, 1, 2}, {"rgb.png", 2, 1, 3}, {"rgba.png", 2, 1, 4}});
+    ASSERT_EQ(s.materials.size(), 6u);
+    ASSERT_EQ(s.textures.size(), 6u);
+    auto texels = [&](u32 index) {
+        EXPECT_LT(index, 6u);
+        return index < 6u ? s.textures[index].texels : std::vector<std::uint32_t>{};
+    };
+    auto byte = [](int i, int c) { return std::uint32_t(pattern(i, c)); };
+    for (int i = 0; i < 2; ++i) {
+        const std::uint32_t g = byte(i, 0);
+        const std::uint32_t grey = g | g << 8 | g << 16;
+        const std::uint32_t rgb = byte(i, 0) | byte(i, 1) << 8 | byte(i, 2) << 16;
+        const std::string at = "texel " + std::to_string(i);
+        std::vector<std::uint32_t> t = texels(s.materials[0].alpha_tex);
+        ASSERT_EQ(t.size(), 2u);
+        EXPECT_EQ(t[i], grey | g << 24) << "grey mask, " << at;
+        t = texels(s.materials[1].alpha_tex);
+        ASSERT_EQ(t.size(), 2u);
+        EXPECT_EQ(t[i], grey | byte(i, 1) << 24) << "grey and alpha mask, " << at;
+        t = texels(s.materials[2].alpha_tex);
+        ASSERT_EQ(t.size(), 2u);
+        EXPECT_EQ(t[i] >> 24, byte(i, 0)) << "RGB mask's alpha, " << at;
+        EXPECT_EQ(t[i], rgb | byte(i, 0) << 24) << "RGB mask, " << at;
+        t = texels(s.materials[3].alpha_tex);
+        ASSERT_EQ(t.size(), 2u);
+        EXPECT_EQ(t[i], rgba_texel(i)) << "RGBA mask, " << at;
+        t = texels(s.materials[4].kd_tex);
+        ASSERT_EQ(t.size(), 2u);
+        EXPECT_EQ(t[i], rgb | 0xFFu << 24) << "RGB colour, " << at;
+        t = texels(s.materials[5].rough_tex);
+        ASSERT_EQ(t.size(), 2u);
+        EXPECT_EQ(t[i], grey | 0xFFu << 24) << "grey data, " << at;
+    }
 }
