@@ -157,7 +157,9 @@ float3 path_next_event(const SceneView* sc, SampleSource* src, uint bounce, floa
     LightSample ls;
     if (!light_sample_tri(lt, sc->mats, x, u1, u2, &ls)) return (float3)(0.0f);
     ShadingEval e = shading_eval(m, f, wo, ls.wi);
-    if (!(path_max3(e.f_cos) > 0.0f)) return (float3)(0.0f);
+    /* No shadow ray where nothing would be carried; a NaN goes on, to be
+     * dropped and counted with its sample. */
+    if (e.f_cos.x == 0.0f && e.f_cos.y == 0.0f && e.f_cos.z == 0.0f) return (float3)(0.0f);
     Ray shadow;
     shadow.o = geo_offset(x, dot(ls.wi, f->ng) >= 0.0f ? f->ng : -f->ng);
     shadow.d = ls.wi;
