@@ -31,6 +31,12 @@ inline float length(Vec3 a) {
 inline Vec3 normalize(Vec3 a) {
     return a * (1.0f / length(a));
 }
+// Writes v into a float[3] (the shared structs' vectors).
+inline void store3(float out[3], Vec3 v) {
+    out[0] = v.x;
+    out[1] = v.y;
+    out[2] = v.z;
+}
 inline Vec3 vmin(Vec3 a, Vec3 b) {
     return {std::min(a.x, b.x), std::min(a.y, b.y), std::min(a.z, b.z)};
 }

@@ -8,12 +8,6 @@ namespace smallmlt {
 
 namespace {
 
-void store3(f32 out[3], Vec3 v) {
-    out[0] = v.x;
-    out[1] = v.y;
-    out[2] = v.z;
-}
-
 double luminance(const f32 c[3]) {
     return rgb_luminance(c[0], c[1], c[2]);
 }

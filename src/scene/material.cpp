@@ -8,12 +8,6 @@ namespace smallmlt {
 
 namespace {
 
-void store(f32 out[3], Vec3 v) {
-    out[0] = v.x;
-    out[1] = v.y;
-    out[2] = v.z;
-}
-
 Material base(u32 type) {
     Material m{};
     m.type = type;
@@ -31,16 +25,16 @@ u32 distribution_flag(Microfacet d) {
 
 Material diffuse_material(Vec3 kd) {
     Material m = base(MAT_DIFFUSE);
-    store(m.kd, kd);
+    store3(m.kd, kd);
     return m;
 }
 
 Material conductor_material(Vec3 ks, Vec3 eta, Vec3 k, float alpha, Microfacet d) {
     bool rough = alpha >= kSmoothAlpha;
     Material m = base(rough ? MAT_ROUGH_CONDUCTOR : MAT_CONDUCTOR);
-    store(m.ks, ks);
-    store(m.eta, eta);
-    store(m.k, k);
+    store3(m.ks, ks);
+    store3(m.eta, eta);
+    store3(m.k, k);
     m.alpha = rough ? alpha : 0.0f;
     m.flags |= distribution_flag(d);
     return m;
@@ -49,7 +43,7 @@ Material conductor_material(Vec3 ks, Vec3 eta, Vec3 k, float alpha, Microfacet d
 Material dielectric_material(float ior, float alpha, Microfacet d) {
     bool rough = alpha >= kSmoothAlpha;
     Material m = base(rough ? MAT_ROUGH_DIELECTRIC : MAT_DIELECTRIC);
-    store(m.ks, {1, 1, 1});
+    store3(m.ks, {1, 1, 1});
     m.ior = ior;
     m.alpha = rough ? alpha : 0.0f;
     m.flags = distribution_flag(d); // both sides are its own
@@ -59,8 +53,8 @@ Material dielectric_material(float ior, float alpha, Microfacet d) {
 Material plastic_material(Vec3 kd, Vec3 ks, float ior, float alpha, Microfacet d) {
     bool rough = alpha >= kSmoothAlpha;
     Material m = base(rough ? MAT_ROUGH_PLASTIC : MAT_PLASTIC);
-    store(m.kd, kd);
-    store(m.ks, ks);
+    store3(m.kd, kd);
+    store3(m.ks, ks);
     m.ior = ior;
     m.alpha = rough ? alpha : 0.0f;
     m.flags |= distribution_flag(d);
@@ -71,7 +65,7 @@ Material plastic_material(Vec3 kd, Vec3 ks, float ior, float alpha, Microfacet d
 }
 
 void set_emission(Material& m, Vec3 ke) {
-    store(m.ke, ke);
+    store3(m.ke, ke);
     m.emissive = (ke.x > 0 || ke.y > 0 || ke.z > 0) ? 1u : 0u;
 }
 
