@@ -7,7 +7,7 @@ SAN      ?= 0
 JOBS     ?= $(shell nproc)
 BUILD    := $(if $(filter 1,$(SAN)),build-san,build)
 CXXFLAGS := -std=c++17 -O2 -g -Wall -Wextra -Werror -Isrc -Icl/core -MMD -MP
-LDLIBS   := -lOpenCL -ltinyobjloader -ltinyexr -lstb -lpthread
+LDLIBS   := -lOpenCL -ltinyobjloader -ltinyexr -lstb -lpugixml -lpthread
 ifeq ($(SAN),1)
 CXXFLAGS += -O1 -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=undefined
 LDFLAGS  += -fsanitize=address,undefined
@@ -21,7 +21,7 @@ endif
 
 DEB_PACKAGES := g++ make pocl-opencl-icd mesa-opencl-icd ocl-icd-opencl-dev opencl-headers \
                 libstb-dev gnuplot-nox libtinyobjloader-dev libtinyexr-dev libgtest-dev \
-                libopenmpi-dev openmpi-bin
+                libopenmpi-dev openmpi-bin libpugixml-dev
 # Mesa's OpenCL (rusticl) on the CPU (llvmpipe), as the only platform: the
 # compiler of Linux's small GPUs (doc/devices.md).
 RUSTICL_ENV  := OCL_ICD_VENDORS=/etc/OpenCL/vendors/rusticl.icd RUSTICL_ENABLE=swrast
@@ -30,7 +30,10 @@ RUSTICL_ENV  := OCL_ICD_VENDORS=/etc/OpenCL/vendors/rusticl.icd RUSTICL_ENABLE=s
 FUZZ_PACKAGES := clang libclang-rt-dev
 FUZZ_SECONDS  ?= 60
 FUZZ_SRC      := $(addprefix src/scene/,scene.cpp obj_loader.cpp mtl_loader.cpp mtl_models.cpp \
-                   material.cpp text_parse.cpp bvh.cpp device_scene.cpp sample_layout.cpp)
+                   material.cpp text_parse.cpp bvh.cpp device_scene.cpp sample_layout.cpp \
+                   texture.cpp mitsuba_xml.cpp mitsuba_transform.cpp mitsuba_shapes.cpp \
+                   mitsuba_bsdfs.cpp mitsuba_conductors.cpp mitsuba_scene.cpp)
+FUZZ_TARGETS  := fuzz_scene fuzz_mitsuba
 
 # Kernel files: the product's (cl/, by stage) and the test binary's probes.
 CL_FILES   := $(sort $(wildcard cl/*/*.h cl/*/*.cl))
@@ -131,15 +134,19 @@ mutants: deps
 
 # Fuzzes the scene, OBJ and MTL loaders for FUZZ_SECONDS (default 60) from
 # the seed corpus in test/fuzz/corpus; findings are written as crash-* files.
-build/fuzz/fuzz_scene: test/fuzz/fuzz_scene.cpp $(FUZZ_SRC)
+build/fuzz/%: test/fuzz/%.cpp test/fuzz/fuzz_files.hpp $(FUZZ_SRC)
 	@mkdir -p $(dir $@)
-	clang++ -std=c++17 -O1 -g -fsanitize=fuzzer,address,undefined -Isrc -Icl/core $^ -o $@ -ltinyobjloader
+	clang++ -std=c++17 -O1 -g -fsanitize=fuzzer,address,undefined -Isrc -Icl/core $(filter %.cpp,$^) -o $@ \
+	    -ltinyobjloader -lstb -lpugixml
 
+# Each target for FUZZ_SECONDS from its seed corpus (test/fuzz/corpus/TARGET).
 fuzz: deps deps-fuzz
-	$(MAKE) build/fuzz/fuzz_scene
-	@mkdir -p build/fuzz/corpus
-	cp test/fuzz/corpus/* build/fuzz/corpus/
-	cd build/fuzz && ./fuzz_scene -max_total_time=$(FUZZ_SECONDS) -max_len=65536 -print_final_stats=1 corpus
+	$(MAKE) $(addprefix build/fuzz/,$(FUZZ_TARGETS))
+	for t in $(FUZZ_TARGETS); do \
+	    mkdir -p build/fuzz/corpus-$$t && cp test/fuzz/corpus/$$t/* build/fuzz/corpus-$$t/ && \
+	    (cd build/fuzz && ./$$t -max_total_time=$(FUZZ_SECONDS) -max_len=65536 \
+	        -print_final_stats=1 corpus-$$t) || exit 1; \
+	done
 
 format:
 	clang-format -i src/*/*.cpp src/*/*.hpp test/*.cpp test/*.hpp cl/*/*.cl cl/*/*.h test/cl/*.cl

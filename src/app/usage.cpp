@@ -14,7 +14,7 @@ constexpr std::size_t kWidth = 80;      // lines end before this column
 const char* const kCommands = R"(smallmlt: Metropolis light transport for small OpenCL devices
 
 Usage:
-  smallmlt render SCENE [options]   render a .scene file
+  smallmlt render SCENE [options]   render a .scene or a Mitsuba .xml file
   smallmlt budget SCENE [options]   device memory per bounce depth, without rendering
   smallmlt compare IMAGE REFERENCE [--mask FILE]
                                     error of IMAGE against REFERENCE (.pfm or .exr):

@@ -89,8 +89,10 @@ void check_smoothing(const std::vector<std::string>& t, const std::string& file,
     if (g < 0 || g > 0x7fffffffL) throw input_error(file, line, usage);
 }
 
-// Checks the OBJ line by line and loads the MTL files it names.
-void check_obj(const std::string& path, Scene& scene) {
+// Checks the OBJ line by line and, with `mtl`, loads the MTL files it names
+// and requires a material for every face; without, mtllib and usemtl are
+// not read (Mitsuba's obj shape).
+void check_obj(const std::string& path, Scene& scene, bool mtl) {
     ObjCounts counts;
     bool has_material = false;
     for_each_directive(path, "mesh", [&](int line, const std::vector<std::string>& t) {
@@ -113,9 +115,11 @@ void check_obj(const std::string& path, Scene& scene) {
             ++counts.texcoords;
         } else if (d == "f") {
             if (t.size() < 4) throw input_error(path, line, "a face needs at least 3 vertices");
-            if (!has_material)
+            if (mtl && !has_material)
                 throw input_error(path, line, "face without a material (no 'usemtl' before it)");
             check_face(t, counts, path, line);
+        } else if (!mtl && (d == "usemtl" || d == "mtllib")) {
+            // Not read: the shape's BSDF gives every face its material.
         } else if (d == "usemtl") {
             if (t.size() != 2) throw input_error(path, line, "'usemtl' takes one name");
             if (material_index(scene, t[1]) < 0)
@@ -201,10 +205,12 @@ unsigned smoothing_group(const tinyobj::shape_t& shape, std::size_t f) {
     return f < ids.size() ? ids[f] : 0u;
 }
 
-} // namespace
-
-void load_obj(const std::string& path, const std::string& where, Scene& scene) {
-    check_obj(path, scene);
+// The triangles of the OBJ at `path`, appended to scene.triangles: with
+// their usemtl materials where `fixed` is null, else all `*fixed` with the
+// smoothing groups not read.
+void read_obj(const std::string& path, const std::string& where, Scene& scene,
+              const std::uint32_t* fixed) {
+    check_obj(path, scene, fixed == nullptr);
     tinyobj::attrib_t attrib;
     std::vector<tinyobj::shape_t> shapes;
     std::vector<tinyobj::material_t> mtls;
@@ -213,13 +219,16 @@ void load_obj(const std::string& path, const std::string& where, Scene& scene) {
     SceneMaterials materials(scene);
     if (!in || !tinyobj::LoadObj(&attrib, &shapes, &mtls, &warn, &err, &in, &materials, true))
         throw InputError(where + ": cannot read " + path + ": " + err);
+    auto group_of = [&](const tinyobj::shape_t& shape, std::size_t f) {
+        return fixed ? 0u : smoothing_group(shape, f);
+    };
 
     // The triangles of smoothing groups, as they add to their vertices.
     GroupNormals groups;
     for (const tinyobj::shape_t& shape : shapes) {
         const std::vector<tinyobj::index_t>& idx = shape.mesh.indices;
         for (std::size_t f = 0; f < shape.mesh.num_face_vertices.size(); ++f) {
-            unsigned g = smoothing_group(shape, f);
+            unsigned g = group_of(shape, f);
             if (g == 0) continue;
             int vi[3] = {idx[3 * f].vertex_index, idx[3 * f + 1].vertex_index,
                          idx[3 * f + 2].vertex_index};
@@ -233,7 +242,7 @@ void load_obj(const std::string& path, const std::string& where, Scene& scene) {
     for (const tinyobj::shape_t& shape : shapes) {
         const std::vector<tinyobj::index_t>& idx = shape.mesh.indices;
         for (std::size_t f = 0; f < shape.mesh.num_face_vertices.size(); ++f) {
-            int mid = shape.mesh.material_ids[f];
+            int mid = fixed ? int(*fixed) : shape.mesh.material_ids[f];
             if (mid < 0 || mid >= static_cast<int>(scene.materials.size()))
                 throw InputError(path + ": a face has no known material");
             SceneTriangle tri;
@@ -246,7 +255,7 @@ void load_obj(const std::string& path, const std::string& where, Scene& scene) {
                 continue;
             }
             Vec3 flat = unit(geometric.x, geometric.y, geometric.z);
-            unsigned g = smoothing_group(shape, f);
+            unsigned g = group_of(shape, f);
             // Each triangle vertex keeps the reference of its face vertex:
             // its normal is the one the face gave there.
             bool given = idx[3 * f].normal_index >= 0;
@@ -267,6 +276,17 @@ void load_obj(const std::string& path, const std::string& where, Scene& scene) {
             scene.triangles.push_back(tri);
         }
     }
+}
+
+} // namespace
+
+void load_obj(const std::string& obj_path, const std::string& where, Scene& scene) {
+    read_obj(obj_path, where, scene, nullptr);
+}
+
+void load_obj_geometry(const std::string& obj_path, const std::string& where,
+                       std::uint32_t material, Scene& scene) {
+    read_obj(obj_path, where, scene, &material);
 }
 
 } // namespace smallmlt

@@ -42,6 +42,8 @@ void parse_camera(const std::vector<std::string>& t, const std::string& file, in
 } // namespace
 
 Scene load_scene(const std::string& path) {
+    if (path.size() >= 4 && path.compare(path.size() - 4, 4, ".xml") == 0)
+        return load_mitsuba_scene(path);
     Scene scene;
     bool seen_film = false, seen_camera = false, seen_depth = false;
     int meshes = 0;
@@ -85,13 +87,15 @@ Scene load_scene(const std::string& path) {
     if (!seen_camera) throw InputError(path + ": no 'camera' line");
     if (meshes == 0) throw InputError(path + ": no 'mesh' line");
     if (scene.triangles.empty()) throw InputError(path + ": the scene has no triangles");
-    bool lit = false;
-    for (const SceneTriangle& t : scene.triangles)
-        lit = lit || scene.materials[t.material].emissive;
-    if (!lit)
-        throw InputError(path + ": no emissive triangle (no material with Ke > 0 is used on a "
-                                "triangle of non-zero area): nothing would be lit");
+    require_lit(scene, path);
     return scene;
+}
+
+void require_lit(const Scene& scene, const std::string& path) {
+    for (const SceneTriangle& t : scene.triangles)
+        if (scene.materials[t.material].emissive) return;
+    throw InputError(path + ": no emissive triangle (no emitting material is used on a "
+                            "triangle of non-zero area): nothing would be lit");
 }
 
 } // namespace smallmlt

@@ -57,14 +57,27 @@ struct Scene {
 constexpr int kMaxDepth = 64;
 constexpr int kMaxFilmSide = 16384;
 
-// Parses a .scene file and the meshes it names. Throws InputError naming the
-// file and line of the first problem.
+// Parses a .scene file and the meshes it names, or a Mitsuba scene file
+// (a name ending in .xml). Throws InputError naming the file and line of the
+// first problem.
 Scene load_scene(const std::string& path);
+
+// Throws InputError naming `path` unless some triangle emits.
+void require_lit(const Scene& scene, const std::string& path);
 
 // Reads the triangles of an OBJ file and the materials of the MTL files it
 // names into `scene` (src/scene/obj_loader.cpp). `where` is "scene:line" of the
 // mesh directive, for messages about the file as a whole.
 void load_obj(const std::string& obj_path, const std::string& where, Scene& scene);
+
+// The triangles of an OBJ file as Mitsuba's obj shape reads them, appended
+// to scene.triangles: every face of material `material`, mtllib, usemtl and
+// smoothing groups not read; shading normals from vn only (src/scene/obj_loader.cpp).
+void load_obj_geometry(const std::string& obj_path, const std::string& where,
+                       std::uint32_t material, Scene& scene);
+
+// Reads a Mitsuba scene file (src/scene/mitsuba_scene.cpp; doc/scene-format.md).
+Scene load_mitsuba_scene(const std::string& path);
 
 // Materials of one MTL file, appended to scene.materials/material_names,
 // and its warnings to scene.warnings (src/scene/mtl_loader.cpp).
