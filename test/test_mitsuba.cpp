@@ -2,6 +2,8 @@
 // values), transforms, shapes, BSDFs, sensor and integrator against
 // hand-computed values, and every error with its file and line.
 #include "base/error.hpp"
+#include "render/mlt.hpp"
+#include "scene/device_scene.hpp"
 #include "scene/material.hpp"
 #include "scene/mitsuba_bsdfs.hpp"
 #include "scene/mitsuba_shapes.hpp"
@@ -401,5 +403,66 @@ TEST(MitsubaXml, EveryErrorNamesItsFileAndLine) {
         EXPECT_NE(got.find(r.want), std::string::npos) << "got: " << got << "\nwant: " << r.want;
         // Every message but the include's names a line of s.xml.
         EXPECT_EQ(got.rfind("s.xml:", 0), 0u) << got;
+    }
+}
+
+namespace {
+
+const char* const kProjectScenes[] = {"ajar",           "cornell",       "cornell-glass",
+                                      "cornell-glossy", "cornell-water", "cornell-water-smooth",
+                                      "furnace",        "tiny-caustic",  "veach-mis",
+                                      "water-spark"};
+
+} // namespace
+
+// Each scene's .xml (scenes/generate.py) is its .scene: the same film, camera,
+// depth and triangles in the same order, each of the same material, bit for
+// bit.
+TEST(MitsubaScenes, EveryProjectSceneReadsTheSameFromItsXml) {
+    for (const char* name : kProjectScenes) {
+        SCOPED_TRACE(name);
+        Scene a = load_scene(std::string("scenes/") + name + ".scene");
+        Scene b = load_scene(std::string("scenes/") + name + ".xml");
+        EXPECT_EQ(a.width, b.width);
+        EXPECT_EQ(a.height, b.height);
+        EXPECT_EQ(a.depth, b.depth);
+        EXPECT_EQ(std::memcmp(&a.camera, &b.camera, sizeof(Camera)), 0);
+        ASSERT_EQ(a.triangles.size(), b.triangles.size());
+        std::size_t differ = 0;
+        for (std::size_t i = 0; i < a.triangles.size(); ++i) {
+            const SceneTriangle &s = a.triangles[i], &x = b.triangles[i];
+            bool same = std::memcmp(s.v, x.v, sizeof(s.v)) == 0 &&
+                        std::memcmp(s.n, x.n, sizeof(s.n)) == 0 &&
+                        std::memcmp(s.uv, x.uv, sizeof(s.uv)) == 0 && s.smooth == x.smooth &&
+                        std::memcmp(&a.materials[s.material], &b.materials[x.material],
+                                    sizeof(Material)) == 0;
+            differ += !same;
+        }
+        EXPECT_EQ(differ, 0u) << "triangles that differ";
+        EXPECT_TRUE(b.warnings.empty()) << b.warnings.front();
+    }
+}
+
+// And so they render the same image, bit for bit, for a seed: path tracing
+// and MLT.
+TEST(MitsubaScenes, XmlAndSceneRenderTheSameImage) {
+    for (const char* name : {"cornell-glossy", "cornell-water-smooth"}) {
+        SCOPED_TRACE(name);
+        DeviceScene a = prepare_scene(test::scene(name, 16, 16));
+        Scene xml = load_scene(std::string("scenes/") + name + ".xml");
+        xml.width = xml.height = 16;
+        DeviceScene b = prepare_scene(xml);
+        EXPECT_EQ(test::render_pt(a, 7, 4).rgb, test::render_pt(b, 7, 4).rgb) << "PT";
+        MltOptions opt = test::plain_mlt();
+        opt.threads = 256;
+        Image img[2];
+        const DeviceScene* ds[2] = {&a, &b};
+        for (int k = 0; k < 2; ++k) {
+            MltRenderer m(test::cl(), *ds[k], opt);
+            m.prepare();
+            m.step(8);
+            img[k] = m.image();
+        }
+        EXPECT_EQ(img[0].rgb, img[1].rgb) << "MLT";
     }
 }

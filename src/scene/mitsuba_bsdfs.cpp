@@ -86,7 +86,7 @@ float alpha_of(const XmlObject& o) {
         if (c->tag == "texture") color_of(o, c->name, {});
     // Mitsuba samples visible normals or not; the image is the same.
     xml_bool(o, "sample_visible", true);
-    return float(std::max(a, double(kSmoothAlpha)));
+    return float(a); // below kSmoothAlpha: the smooth model
 }
 
 // specular_reflectance / specular_transmittance where the model has no such

@@ -92,15 +92,23 @@ void read_sensor(const XmlObject& root, Scene& scene) {
             fail(s, "the sensor's to_world scales (Mitsuba does not allow it)");
     }
     if (!(m.det3() > 0)) fail(s, "the sensor's to_world mirrors the image");
-    scene.camera.eye = m.point({0, 0, 0});
-    scene.camera.target = m.point({0, 0, 1});
-    scene.camera.up = normalize(m.vector({0, 1, 0}));
+    const XmlProperty* tw = s.find("to_world");
+    if (tw && tw->is_lookat) { // as written: the camera of a .scene file's numbers
+        scene.camera.eye = tw->lookat[0];
+        scene.camera.target = tw->lookat[1];
+        scene.camera.up = tw->lookat[2];
+    } else {
+        scene.camera.eye = m.point({0, 0, 0});
+        scene.camera.target = m.point({0, 0, 1});
+        scene.camera.up = normalize(m.vector({0, 1, 0}));
+    }
     if (s.find("focal_length")) fail(s, "'focal_length' is not read (give 'fov')");
     double fov = xml_float(s, "fov", -1);
     if (fov == -1) fail(s, "the sensor needs a 'fov' (degrees)");
     if (!(fov > 0 && fov < 180)) fail(s, "'fov' must be in (0, 180) degrees");
     std::string axis = xml_string(s, "fov_axis", "x");
-    scene.camera.fov_y_deg = float(vertical_fov_deg(s, fov, axis, scene.width, scene.height));
+    scene.camera.fov_y_deg =
+        float(axis == "y" ? fov : vertical_fov_deg(s, fov, axis, scene.width, scene.height));
     for (const char* clip : {"near_clip", "far_clip"})
         if (const XmlProperty* p = s.find(clip)) {
             p->read = true;

@@ -147,8 +147,8 @@ void add_obj(const XmlObject& o, std::uint32_t m, Scene& scene) {
     const bool flip_uv = xml_bool(o, "flip_tex_coords", true);
     for (std::size_t t = first; t < scene.triangles.size(); ++t) {
         SceneTriangle& tri = scene.triangles[t];
-        if (face_normals) {
-            Vec3 flat = normalize(cross(tri.v[1] - tri.v[0], tri.v[2] - tri.v[0]));
+        if (face_normals && tri.smooth) {
+            const Vec3 flat = tri.flat_normal();
             for (Vec3& n : tri.n)
                 n = flat;
             tri.smooth = false;
@@ -191,12 +191,14 @@ void add_mitsuba_shape(const XmlObject& o, std::uint32_t material, Scene& scene)
     if (!(std::abs(to_world.det3()) > 0))
         throw input_error(o.where.file, o.where.line, "'to_world' of the shape is singular");
     const bool flip = xml_bool(o, "flip_normals", false);
+    const bool identity = to_world.is_identity();
     for (std::size_t t = first; t < scene.triangles.size(); ++t) {
         SceneTriangle& tri = scene.triangles[t];
-        for (int k = 0; k < 3; ++k) {
-            tri.v[k] = to_world.point(tri.v[k]);
-            tri.n[k] = normalize(to_world.normal(tri.n[k]));
-        }
+        if (!identity) // (an identity keeps a mesh's numbers as read)
+            for (int k = 0; k < 3; ++k) {
+                tri.v[k] = to_world.point(tri.v[k]);
+                tri.n[k] = normalize(to_world.normal(tri.n[k]));
+            }
         if (flip) {
             std::swap(tri.v[1], tri.v[2]);
             std::swap(tri.n[1], tri.n[2]);

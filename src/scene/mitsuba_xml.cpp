@@ -161,8 +161,9 @@ Vec3 xyz_of(Reader& r, const pugi::xml_node& n, const Source& src, double fallba
     return {float(c[0]), float(c[1]), float(c[2])};
 }
 
-Mat4 read_transform(Reader& r, const pugi::xml_node& node, const Source& src) {
+Mat4 read_transform(Reader& r, const pugi::xml_node& node, const Source& src, XmlProperty& p) {
     Mat4 m;
+    int ops = 0;
     for (pugi::xml_node op : node.children()) {
         if (op.type() != pugi::node_element) continue;
         const std::string tag = op.name();
@@ -214,12 +215,15 @@ Mat4 read_transform(Reader& r, const pugi::xml_node& node, const Source& src) {
                 throw input_error(
                     w.file, w.line,
                     "lookat: origin and target coincide, or up is parallel to the view");
+            p.is_lookat = ops == 0;
+            p.lookat[0] = origin, p.lookat[1] = target, p.lookat[2] = up;
         } else {
             throw input_error(
                 w.file, w.line,
                 "<" + tag + "> is not a transform (translate, rotate, scale, matrix, lookat)");
         }
         m = t * m;
+        if (ops++ > 0) p.is_lookat = false;
     }
     return m;
 }
@@ -292,7 +296,7 @@ XmlProperty Reader::read_property(const pugi::xml_node& node, const Source& src,
             throw input_error(w.file, w.line, what + " needs x, y and z (or value)");
         p.numbers = {v.x, v.y, v.z};
     } else { // transform
-        p.transform = read_transform(*this, node, src);
+        p.transform = read_transform(*this, node, src, p);
     }
     return p;
 }

@@ -28,6 +28,9 @@ struct XmlProperty {
     std::vector<double> numbers; // float, integer: 1; rgb, point, vector: 3; spectrum: 1 (uniform)
     std::string text;            // string; boolean: "true" or "false"
     Mat4 transform;
+    // A transform of one <lookat>: its origin, target and up as written.
+    bool is_lookat = false;
+    Vec3 lookat[3];
     XmlWhere where;
     mutable bool read = false; // set by the accessors; unread ones are warned about
 };

@@ -254,7 +254,7 @@ void read_obj(const std::string& path, const std::string& where, Scene& scene,
                 ++scene.dropped_degenerate;
                 continue;
             }
-            Vec3 flat = unit(geometric.x, geometric.y, geometric.z);
+            Vec3 flat = tri.flat_normal();
             unsigned g = group_of(shape, f);
             // Each triangle vertex keeps the reference of its face vertex:
             // its normal is the one the face gave there.
@@ -279,6 +279,11 @@ void read_obj(const std::string& path, const std::string& where, Scene& scene,
 }
 
 } // namespace
+
+Vec3 SceneTriangle::flat_normal() const {
+    Vec3 g = cross(v[1] - v[0], v[2] - v[0]);
+    return unit(g.x, g.y, g.z);
+}
 
 void load_obj(const std::string& obj_path, const std::string& where, Scene& scene) {
     read_obj(obj_path, where, scene, nullptr);

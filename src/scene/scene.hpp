@@ -28,6 +28,9 @@ struct SceneTriangle {
     bool smooth = false; // has interpolated normals
     float uv[3][2] = {}; // texture coordinates at v[0..2] (0 where the mesh has none)
 
+    // The unit geometric normal (normalized in double precision).
+    Vec3 flat_normal() const;
+
     // A flat triangle.
     static SceneTriangle flat(Vec3 a, Vec3 b, Vec3 c, std::uint32_t material) {
         SceneTriangle t;
