@@ -1,0 +1,249 @@
+"""Mitsuba 3 against smallmlt on scene files (run by bench/mitsuba.sh).
+
+Per scene:
+1. Agreement: REPLICAS renders by Mitsuba's path integrator and as many by
+   smallmlt's path tracer (own seeds, AGREE_SPP samples per pixel, film
+   AGREE_SIZE square); per 8x8-pixel region, Welch's t of the mean luminance,
+   against the two-sided Student quantile at 0.01 over the regions
+   (Bonferroni); and the two image means.
+2. Equal time: Mitsuba, smallmlt PT and smallmlt MLT for SECONDS each at
+   SIZE x SIZE, MSE and 8x8-block MSE on linear RGB against a smallmlt PT
+   reference of REF_SECONDS. Mitsuba's time is its render call after a
+   warm-up render has compiled its kernels; smallmlt's is its --time.
+"""
+import math
+import os
+import re
+import subprocess
+import sys
+import tempfile
+import time
+
+import drjit as dr
+import mitsuba as mi
+import numpy as np
+
+mi.set_variant("llvm_ad_rgb")
+
+THREADS = int(os.environ.get("THREADS", "2"))
+SIZE = int(os.environ.get("SIZE", "128"))
+SECONDS = float(os.environ.get("SECONDS", "10"))
+REPLICAS = int(os.environ.get("REPLICAS", "8"))
+AGREE_SIZE = int(os.environ.get("AGREE_SIZE", "64"))
+AGREE_SPP = int(os.environ.get("AGREE_SPP", "256"))
+REF_SECONDS = int(os.environ.get("REF_SECONDS", "300"))
+OUT = os.path.join("bench", "results", "mitsuba")
+CACHE = os.path.join("bench", "cache")
+ALPHA = 0.01
+BLOCK = 8
+
+dr.set_thread_count(THREADS)
+
+
+def read_pfm(path):
+    with open(path, "rb") as f:
+        if f.readline().strip() != b"PF":
+            raise ValueError(path + ": not an RGB PFM")
+        w, h = map(int, f.readline().split())
+        scale = float(f.readline())
+        data = np.fromfile(f, "<f4" if scale < 0 else ">f4").reshape(h, w, 3)
+    return data[::-1].astype(np.float64)  # top row first
+
+
+def luminance(img):
+    return 0.2126 * img[..., 0] + 0.7152 * img[..., 1] + 0.0722 * img[..., 2]
+
+
+def block_means(values, block):
+    h, w = values.shape[:2]
+    v = values[: h - h % block, : w - w % block]
+    return v.reshape(h // block, block, w // block, block, *v.shape[2:]).mean(axis=(1, 3))
+
+
+def student_quantile(p_two_sided, df):
+    """t with P(|T| > t) = p, by bisection on the t density's integral."""
+    def upper_tail(t):
+        x = np.linspace(t, t + 60.0, 200001)
+        pdf = (math.gamma((df + 1) / 2) / (math.sqrt(df * math.pi) * math.gamma(df / 2))
+               * (1 + x * x / df) ** (-(df + 1) / 2))
+        return float(np.trapezoid(pdf, x))
+    lo, hi = 0.0, 100.0
+    for _ in range(60):
+        mid = (lo + hi) / 2
+        if 2 * upper_tail(mid) > p_two_sided:
+            lo = mid
+        else:
+            hi = mid
+    return (lo + hi) / 2
+
+
+def with_film(xml_path, size, out_path):
+    """A copy of the scene file with a size x size film, beside it (so that
+    its relative paths hold)."""
+    text = open(xml_path).read()
+    text = re.sub(r'(<integer name="width" value=")\d+', r"\g<1>%d" % size, text)
+    text = re.sub(r'(<integer name="height" value=")\d+', r"\g<1>%d" % size, text)
+    with open(out_path, "w") as f:
+        f.write(text)
+    return out_path
+
+
+def mitsuba_render(path, spp, seed):
+    scene = mi.load_file(path)
+    t0 = time.time()
+    img = np.array(mi.render(scene, spp=spp, seed=seed), dtype=np.float64)
+    return img[..., :3], time.time() - t0
+
+
+def smallmlt_render(binary, path, args, out):
+    cmd = [binary, "render", path, "--quiet", "--out", out] + args
+    run = subprocess.run(cmd, stderr=subprocess.PIPE, text=True)
+    if run.returncode != 0:
+        sys.exit(run.stderr + "bench/mitsuba_peer.py: " + " ".join(cmd) + " failed")
+    return read_pfm(out)
+
+
+def cbox(path, size):
+    """Mitsuba's own Cornell box (mi.cornell_box()) as a scene file, with a
+    box filter (smallmlt's) and a size x size film."""
+    d = mi.cornell_box()
+    d["sensor"]["film"]["rfilter"] = {"type": "box"}
+    d["sensor"]["film"]["width"] = d["sensor"]["film"]["height"] = size
+
+    def value(name, v, pad):
+        if isinstance(v, bool):
+            return '%s<boolean name="%s" value="%s"/>\n' % (pad, name, str(v).lower())
+        if isinstance(v, int):
+            return '%s<integer name="%s" value="%d"/>\n' % (pad, name, v)
+        if isinstance(v, float):
+            return '%s<float name="%s" value="%r"/>\n' % (pad, name, v)
+        if isinstance(v, str):
+            return '%s<string name="%s" value="%s"/>\n' % (pad, name, v)
+        if isinstance(v, mi.ScalarTransform4f):
+            m = np.array(v.matrix).reshape(4, 4)
+            return ('%s<transform name="%s"><matrix value="%s"/></transform>\n'
+                    % (pad, name, " ".join("%r" % float(x) for x in m.flatten())))
+        if isinstance(v, dict) and v.get("type") == "rgb":
+            return '%s<rgb name="%s" value="%s"/>\n' % (pad, name, " ".join("%r" % float(x) for x in v["value"]))
+        if isinstance(v, dict) and v.get("type") == "ref":
+            return '%s<ref id="%s"/>\n' % (pad, v["id"])
+        if isinstance(v, dict):
+            return obj(name, v, pad)
+        raise TypeError(name)
+
+    tags = {"path": "integrator", "perspective": "sensor", "hdrfilm": "film", "independent": "sampler",
+            "box": "rfilter", "diffuse": "bsdf", "rectangle": "shape", "cube": "shape", "area": "emitter"}
+
+    def obj(key, v, pad, ident=None):
+        tag = tags[v["type"]]
+        s = '%s<%s type="%s"%s>\n' % (pad, tag, v["type"], ' id="%s"' % ident if ident else "")
+        for k, x in v.items():
+            if k != "type":
+                s += value(k, x, pad + "    ")
+        return s + "%s</%s>\n" % (pad, tag)
+
+    text = '<scene version="3.0.0">\n'
+    for k, v in d.items():
+        if k != "type":
+            text += obj(k, v, "    ", ident=k if v["type"] == "diffuse" else None)
+    with open(path, "w") as f:
+        f.write(text + "</scene>\n")
+    return path
+
+
+def agreement(binary, name, path, tmp):
+    mits, ours = [], []
+    for r in range(1, REPLICAS + 1):
+        img, _ = mitsuba_render(path, AGREE_SPP, r)
+        mits.append(luminance(img))
+        ours.append(luminance(smallmlt_render(
+            binary, path, ["--method", "pt", "--spp", str(AGREE_SPP), "--seed", str(r)],
+            os.path.join(tmp, "a.pfm"))))
+    a = np.array([block_means(x, BLOCK) for x in mits]).reshape(REPLICAS, -1)
+    b = np.array([block_means(x, BLOCK) for x in ours]).reshape(REPLICAS, -1)
+    va, vb = a.var(axis=0, ddof=1) / REPLICAS, b.var(axis=0, ddof=1) / REPLICAS
+    se = np.sqrt(va + vb)
+    ok = se > 0
+    t = np.zeros_like(se)
+    t[ok] = (b.mean(axis=0) - a.mean(axis=0))[ok] / se[ok]
+    df = (va + vb) ** 2 / (va ** 2 / (REPLICAS - 1) + vb ** 2 / (REPLICAS - 1) + 1e-300)
+    regions = int(ok.sum())
+    crit = student_quantile(ALPHA / regions, float(np.median(df[ok])))
+    worst = int(np.argmax(np.abs(t)))
+    ma, mb = a.mean(axis=1), b.mean(axis=1)  # image means per replica
+    z_mean = (mb.mean() - ma.mean()) / math.sqrt(ma.var(ddof=1) / REPLICAS + mb.var(ddof=1) / REPLICAS)
+    rel = (b.mean(axis=0)[worst] - a.mean(axis=0)[worst]) / max(a.mean(axis=0)[worst], 1e-30)
+    return {
+        "scene": name, "mitsuba_mean": ma.mean(), "pt_mean": mb.mean(), "mean_z": z_mean,
+        "regions": regions, "max_abs_t": float(np.abs(t).max()), "critical_t": crit,
+        "worst_region_rel_diff": rel, "agree": bool(np.abs(t).max() < crit and abs(z_mean) < crit),
+    }
+
+
+def equal_time(binary, name, path, tmp):
+    ref_path = os.path.join(CACHE, "%s-xml-%dx%d-%ds.pfm" % (name, SIZE, SIZE, REF_SECONDS))
+    if not os.path.exists(ref_path):
+        print("rendering the reference %s (smallmlt PT, %d s)" % (ref_path, REF_SECONDS), flush=True)
+        smallmlt_render(binary, path, ["--method", "pt", "--time", str(REF_SECONDS), "--seed", "987654321"], ref_path)
+    ref = read_pfm(ref_path)
+    rows = []
+    mitsuba_render(path, 4, 1000)  # compiles the kernels
+    _, t16 = mitsuba_render(path, 16, 1001)
+    spp = max(1, int(SECONDS / (t16 / 16)))
+    img, secs = mitsuba_render(path, spp, 1)
+    rows.append(("Mitsuba 3 path", secs, img))
+    for label, args in (("smallmlt PT", ["--method", "pt"]), ("smallmlt MLT", ["--method", "mlt"])):
+        out = os.path.join(tmp, "e.pfm")
+        img = smallmlt_render(binary, path, args + ["--time", str(SECONDS), "--seed", "1"], out)
+        rows.append((label, SECONDS, img))
+    result = []
+    for label, secs, img in rows:
+        mse = float(((img - ref) ** 2).mean())
+        bmse = float(((block_means(img, BLOCK) - block_means(ref, BLOCK)) ** 2).mean())
+        result.append((label, secs, mse, bmse))
+    return result
+
+
+def main():
+    binary = sys.argv[1]
+    os.makedirs(OUT, exist_ok=True)
+    os.makedirs(CACHE, exist_ok=True)
+    print("Mitsuba %s (llvm_ad_rgb), %d threads; smallmlt %s" % (mi.__version__, THREADS, binary))
+    report = []
+    for arg in sys.argv[2:]:
+        name = "cbox" if arg == "cbox" else os.path.splitext(os.path.basename(arg))[0]
+        with tempfile.TemporaryDirectory() as tmp:
+            if arg == "cbox":
+                src = cbox(os.path.join(OUT, "cbox.xml"), SIZE)
+                small = cbox(os.path.join(OUT, "cbox-agree.xml"), AGREE_SIZE)
+            else:
+                src = with_film(arg, SIZE, os.path.join(os.path.dirname(arg), ".peer-%s.xml" % name))
+                small = with_film(arg, AGREE_SIZE, os.path.join(os.path.dirname(arg), ".peer-%s-agree.xml" % name))
+            try:
+                a = agreement(binary, name, small, tmp)
+                print("%s: image mean PT %.6g, Mitsuba %.6g (z %+.2f); %d regions of %dx%d, largest |t| %.2f "
+                      "(limit %.2f at %.2g, Bonferroni): %s; worst region PT/Mitsuba - 1 = %+.2f%%"
+                      % (name, a["pt_mean"], a["mitsuba_mean"], a["mean_z"], a["regions"], BLOCK, BLOCK,
+                         a["max_abs_t"], a["critical_t"], ALPHA, "agree" if a["agree"] else "DISAGREE",
+                         100 * a["worst_region_rel_diff"]), flush=True)
+                e = equal_time(binary, name, src, tmp)
+                for label, secs, mse, bmse in e:
+                    print("  %-14s %6.2f s  MSE %.4g  8x8-block MSE %.4g" % (label, secs, mse, bmse), flush=True)
+                report.append((a, e))
+            finally:
+                if arg != "cbox":
+                    for p in (src, small):
+                        os.remove(p)
+    with open(os.path.join(OUT, "summary.md"), "w") as f:
+        f.write("| scene | PT / Mitsuba mean | mean z | largest region |t| (limit) | agree | "
+                "MSE at %g s: Mitsuba / PT / MLT | 8x8 blocks |\n| --- | --- | --- | --- | --- | --- | --- |\n" % SECONDS)
+        for a, e in report:
+            f.write("| %s | %.4f | %+.2f | %.2f (%.2f) | %s | %s | %s |\n" % (
+                a["scene"], a["pt_mean"] / a["mitsuba_mean"], a["mean_z"], a["max_abs_t"], a["critical_t"],
+                "yes" if a["agree"] else "no", " / ".join("%.3g" % r[2] for r in e),
+                " / ".join("%.3g" % r[3] for r in e)))
+    print(open(os.path.join(OUT, "summary.md")).read())
+
+
+if __name__ == "__main__":
+    main()
