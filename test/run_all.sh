@@ -30,7 +30,7 @@ LightSampling.*:DielectricSampling.*:LightPick.*:SmallStep.IntegerDelta*:SobolSa
 SobolSampler.Pairs*:SobolSampler.ImageIsPathTracingsImagePerBlock:\
 Proposals/ChainTarget.StatesFollowTheClosedFormMarginals/0:MltDeterminism.*:\
 Render.SameSeed*:Render.ManySamplesAtOnceEqualOneByOne:FilmOverflow.*:\
-Split.FurnacePartsAreTheClosedForm:StuckChains.EveryChainThatBecameStuckIsCountedOnce}
+Split.FurnacePartsAreTheClosedForm:StuckChains.EveryChainThatBecameStuckIsCountedOnce:DirectLight.*}
 RUSTICL_ICD=/etc/OpenCL/vendors/rusticl.icd
 rusticl() { OCL_ICD_VENDORS=$RUSTICL_ICD RUSTICL_ENABLE=swrast "$@"; }
 if [ "$RUSTICL_TESTS" != none ]; then

@@ -160,10 +160,16 @@ float3 path_next_event(const SceneView* sc, SampleSource* src, uint bounce, floa
     /* No shadow ray where nothing would be carried; a NaN goes on, to be
      * dropped and counted with its sample. */
     if (e.f_cos.x == 0.0f && e.f_cos.y == 0.0f && e.f_cos.z == 0.0f) return (float3)(0.0f);
+    /* Aimed from the offset origin at the light's point, and stopped just
+     * short of it: along wi itself, the offset would meet the light's plane
+     * before the point wherever wi is shallow to it, and the light would
+     * shadow itself. */
     Ray shadow;
     shadow.o = geo_offset(x, dot(ls.wi, f->ng) >= 0.0f ? f->ng : -f->ng);
-    shadow.d = ls.wi;
-    shadow.tmax = length(x + ls.wi * ls.dist - shadow.o) * (1.0f - 1e-4f);
+    float3 to_light = x + ls.wi * ls.dist - shadow.o;
+    float reach = length(to_light);
+    shadow.d = to_light / reach;
+    shadow.tmax = reach * (1.0f - 1e-4f);
     if (!path_unoccluded(sc, shadow, rays)) return (float3)(0.0f);
     float w = light_power_heuristic(ls.pdf_w, e.pdf_w);
     return ls.radiance * e.f_cos * (w / ls.pdf_w);
