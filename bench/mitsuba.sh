@@ -17,7 +17,7 @@ VENV=bench/venv
 LLVM=/usr/lib/x86_64-linux-gnu/libLLVM.so.19.1
 if [ ! -e "$LLVM" ]; then
     echo "installing libllvm19 (Mitsuba's LLVM back end fails with Debian's default LLVM)"
-    apt-get install -y -qq libllvm19 >/dev/null
+    apt-get update -qq && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq libllvm19 >/dev/null
 fi
 if [ ! -x "$VENV/bin/python" ]; then
     python3 -m venv "$VENV"
