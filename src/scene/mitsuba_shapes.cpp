@@ -22,7 +22,7 @@ void push(Scene& scene, std::uint32_t material, const Vertex& a, const Vertex& b
           bool smooth) {
     SceneTriangle t = SceneTriangle::flat(a.p, b.p, c.p, material);
     const Vertex* v[3] = {&a, &b, &c};
-    Vec3 flat = normalize(cross(b.p - a.p, c.p - a.p));
+    const Vec3 flat = t.flat_normal();
     for (int k = 0; k < 3; ++k) {
         t.n[k] = smooth ? v[k]->n : flat;
         t.uv[k][0] = v[k]->u;
@@ -116,7 +116,7 @@ void vertex_normals(Scene& scene, std::size_t first) {
     std::map<std::tuple<float, float, float>, Vec3> sums;
     for (std::size_t t = first; t < scene.triangles.size(); ++t) {
         const SceneTriangle& tri = scene.triangles[t];
-        Vec3 face = normalize(cross(tri.v[1] - tri.v[0], tri.v[2] - tri.v[0]));
+        const Vec3 face = tri.flat_normal();
         for (int k = 0; k < 3; ++k) {
             Vec3 e1 = normalize(tri.v[(k + 1) % 3] - tri.v[k]);
             Vec3 e2 = normalize(tri.v[(k + 2) % 3] - tri.v[k]);
