@@ -10,6 +10,8 @@
 #include <algorithm>
 #include <cmath>
 #include <complex>
+#include <cstddef>
+#include <vector>
 
 namespace smallmlt::ref {
 
@@ -126,22 +128,26 @@ inline double fresnel_conductor(double c, double eta, double k) {
     return 0.5 * (std::norm(rs) + std::norm(rp));
 }
 
-// 2 * integral over c in [0, 1] of fresnel(c, eta) c dc: the cosine-weighted
-// hemispherical reflectance (Gauss-Legendre on many panels; the kink at the
-// critical angle costs accuracy only in one panel).
-inline double fresnel_hemispherical(double eta) {
+// 2 * integral over c in [0, 1] of f(c) c dc, by 4-point Gauss-Legendre on
+// equal panels.
+template <typename F> double cosine_mean(F f, int panels) {
     static const double x[4] = {-0.8611363115940526, -0.3399810435848563, 0.3399810435848563,
                                 0.8611363115940526};
     static const double w[4] = {0.3478548451374538, 0.6521451548625461, 0.6521451548625461,
                                 0.3478548451374538};
-    const int panels = 4096;
     double sum = 0, h = 1.0 / panels;
     for (int p = 0; p < panels; ++p)
         for (int j = 0; j < 4; ++j) {
             double c = (p + 0.5 + 0.5 * x[j]) * h;
-            sum += w[j] * 0.5 * h * fresnel(c, eta) * c;
+            sum += w[j] * 0.5 * h * f(c) * c;
         }
     return 2 * sum;
+}
+
+// The cosine-weighted hemispherical reflectance of a smooth interface (the
+// kink at the critical angle costs accuracy only in one of many panels).
+inline double fresnel_hemispherical(double eta) {
+    return cosine_mean([&](double c) { return fresnel(c, eta); }, 4096);
 }
 
 // ---- Directions ------------------------------------------------------------
@@ -196,21 +202,6 @@ inline double rough_dielectric_f(D3 wo, D3 wi, double ior, double alpha, bool be
     return std::fabs(oh * ih) * eo * eo * (1 - f) * ndf(h, alpha, beckmann) *
            smith_g1(wo, h, alpha, beckmann) * smith_g1(wi, h, alpha, beckmann) /
            (std::fabs(wo.z * wi.z) * den * den);
-}
-
-// Plastic, one channel: the coat's microfacet lobe (rough only) plus the base
-// kd / pi (1 - F(wo.z)) (1 - F(wi.z)) / (ior^2 (1 - fdr_int)).
-inline double plastic_f(D3 wo, D3 wi, double kd, double ks, double ior, double fdr_int,
-                        double alpha, bool beckmann, bool rough) {
-    if (wo.z <= 0 || wi.z <= 0) return 0;
-    double base = kd / kPi * (1 - fresnel(wo.z, ior)) * (1 - fresnel(wi.z, ior)) /
-                  (ior * ior * (1 - fdr_int));
-    if (!rough) return base;
-    D3 h = unit(wo + wi);
-    double coat = ks * fresnel(dot(wo, h), ior) * ndf(h, alpha, beckmann) *
-                  smith_g1(wo, h, alpha, beckmann) * smith_g1(wi, h, alpha, beckmann) /
-                  (4 * wo.z * wi.z);
-    return coat + base;
 }
 
 // ---- Quadrature over microfacet normals ------------------------------------
@@ -279,18 +270,91 @@ inline double rough_dielectric_albedo(D3 wo, double ior, double alpha, bool beck
     });
 }
 
+// ---- Plastic's coat ----------------------------------------------------------
+
+// A rough dielectric interface of index ior at cosine c. Seen from outside
+// (inside false): the energy it refracts inside, the visible normals'
+// expectation of (1 - F(wo.m)) G1(refracted). Seen from inside: the energy
+// it reflects back, the expectation of F(wo.m, 1 / ior) G1(reflected).
+inline double coat_energy(bool inside, double c, double ior, double alpha, bool beckmann, int nv,
+                          int nphi) {
+    D3 wo = incident(c);
+    double eta = inside ? 1 / ior : ior;
+    auto g = [&](D3 m) {
+        double f = fresnel(dot(wo, m), eta);
+        D3 w = reflect(wo, m);
+        if (inside) return w.z > 0 ? f * smith_g1(w, m, alpha, beckmann) : 0.0;
+        if (!refract(wo, m, eta, &w) || w.z >= 0) return 0.0;
+        return (1 - f) * smith_g1(w, m, alpha, beckmann);
+    };
+    return visible_expectation(wo, alpha, beckmann, g, nv, nphi);
+}
+
+// Plastic's coat as the model uses it. Smooth: t = 1 - F, inner the
+// hemispherical reflectance from inside. Rough: t at cos = i / (nodes - 1)
+// (1e-6 for i = 0) joined linearly, inner = 2 * integral of the reflectance
+// inside times cos.
+struct Coat {
+    bool rough = false;
+    double ior = 1.5;
+    std::vector<double> t;
+    double inner = 0;
+
+    double transmittance(double c) const {
+        if (!rough) return 1 - fresnel(c, ior);
+        double x = std::clamp(c, 0.0, 1.0) * double(t.size() - 1);
+        std::size_t i = std::min(std::size_t(x), t.size() - 2);
+        return t[i] + (x - double(i)) * (t[i + 1] - t[i]);
+    }
+};
+
+inline Coat smooth_coat(double ior) {
+    Coat c;
+    c.ior = ior;
+    c.inner = fresnel_hemispherical(1 / ior);
+    return c;
+}
+
+inline Coat rough_coat(double ior, double alpha, bool beckmann, int nodes, int nv = 512,
+                       int nphi = 128) {
+    Coat c;
+    c.rough = true;
+    c.ior = ior;
+    for (int i = 0; i < nodes; ++i)
+        c.t.push_back(coat_energy(false, std::max(1e-6, double(i) / (nodes - 1)), ior, alpha,
+                                  beckmann, nv, nphi));
+    c.inner = cosine_mean(
+        [&](double x) { return coat_energy(true, x, ior, alpha, beckmann, nv, nphi); }, 16);
+    return c;
+}
+
+// Plastic, one channel: the coat's microfacet lobe (rough only) plus the base
+// kd / pi t(wo.z) t(wi.z) / (ior^2 (1 - inner)).
+inline double plastic_f(D3 wo, D3 wi, double kd, double ks, double ior, const Coat& coat,
+                        double alpha, bool beckmann, bool rough) {
+    if (wo.z <= 0 || wi.z <= 0) return 0;
+    double base = kd / kPi * coat.transmittance(wo.z) * coat.transmittance(wi.z) /
+                  (ior * ior * (1 - coat.inner));
+    if (!rough) return base;
+    D3 h = unit(wo + wi);
+    double lobe = ks * fresnel(dot(wo, h), ior) * ndf(h, alpha, beckmann) *
+                  smith_g1(wo, h, alpha, beckmann) * smith_g1(wi, h, alpha, beckmann) /
+                  (4 * wo.z * wi.z);
+    return lobe + base;
+}
+
 // Albedo of the rough plastic, one channel (wo.z > 0): the coat's expectation
-// of ks F(wo.m) G1(wi) plus the base kd (1 - F(wo.z)) (1 - fdr_ext) /
-// (ior^2 (1 - fdr_int)), fdr_ext the cosine-weighted reflectance from outside.
-inline double rough_plastic_albedo(D3 wo, double kd, double ks, double ior, double fdr_int,
+// of ks F(wo.m) G1(wi) plus the base kd t(wo.z) T / (ior^2 (1 - inner)), T
+// the cosine-weighted mean of t.
+inline double rough_plastic_albedo(D3 wo, double kd, double ks, double ior, const Coat& coat,
                                    double alpha, bool beckmann) {
-    double coat = visible_expectation(wo, alpha, beckmann, [&](D3 m) {
+    double lobe = visible_expectation(wo, alpha, beckmann, [&](D3 m) {
         D3 wi = reflect(wo, m);
         return wi.z > 0 ? fresnel(dot(wo, m), ior) * smith_g1(wi, m, alpha, beckmann) : 0.0;
     });
-    double base = kd * (1 - fresnel(wo.z, ior)) * (1 - fresnel_hemispherical(ior)) /
-                  (ior * ior * (1 - fdr_int));
-    return ks * coat + base;
+    double t_mean = cosine_mean([&](double c) { return coat.transmittance(c); }, 1024);
+    double base = kd * coat.transmittance(wo.z) * t_mean / (ior * ior * (1 - coat.inner));
+    return ks * lobe + base;
 }
 
 } // namespace smallmlt::ref

@@ -50,6 +50,12 @@ enum { MAT_MODELS(MAT_TYPE_ID) MAT_TYPES };
 #define MAT_FLAG_BECKMANN 1u
 #define MAT_FLAG_TWO_SIDED 2u
 
+/* Material.coat_t: COAT_T_SIZE 16-bit entries, two to a word. */
+#define COAT_T_SIZE 32
+#define COAT_T_ONE 65535.0f
+#define COAT_T_WORD(i) ((i) >> 1)
+#define COAT_T_SHIFT(i) (((i)&1) * 16)
+
 /* Marks "no light" in Triangle.light_index. */
 #define LIGHT_NONE 0xFFFFFFFFu
 
@@ -99,14 +105,18 @@ typedef struct {
  * - alpha: microfacet roughness (GGX or Beckmann alpha, rough models);
  * - flags: MAT_FLAG_*;
  * - fdr_int: plastic: the coat's hemispherical reflectance from inside
- *   (the host integrates it, src/scene/material.cpp);
+ *   (the host integrates it: src/scene/material.cpp for a smooth coat,
+ *   src/scene/plastic_coat.cpp for a rough one);
  * - spec_weight: plastic: the share of its lobe choice given to the coat
  *   before Fresnel, lum(ks) / (lum(ks) + lum(kd)) of the constant colours
  *   (a texture does not change it: it steers sampling only);
  * - kd_tex, ks_tex, rough_tex, alpha_tex: textures (TextureInfo index, or
  *   TEX_NONE) that replace kd, ks, the roughness (alpha = texel^2) and
- *   give the cut-out (a texel below 1/2 is a hole), at the hit's (u, v).
- * 104 bytes. */
+ *   give the cut-out (a texel below 1/2 is a hole), at the hit's (u, v);
+ * - coat_t: rough plastic: the coat's transmittance t(cos) at
+ *   cos = i / (COAT_T_SIZE - 1), entry i in bits COAT_T_SHIFT(i) of word
+ *   COAT_T_WORD(i), t = bits / COAT_T_ONE (linear between entries).
+ * 168 bytes. */
 typedef struct {
     f32 kd[3];
     u32 type;
@@ -124,6 +134,7 @@ typedef struct {
     u32 ks_tex;
     u32 rough_tex;
     u32 alpha_tex;
+    u32 coat_t[COAT_T_SIZE / 2];
 } Material;
 
 #define TEX_NONE 0xFFFFFFFFu
@@ -252,11 +263,12 @@ typedef struct {
         F(Triangle, light_pick_prob, 28) F(Triangle, e2, 32) F(Triangle, light_index, 44)          \
     S(TriangleNormals, 36) F(TriangleNormals, n1, 12) F(TriangleNormals, n2, 24)                 \
     S(BvhNode, 32) F(BvhNode, offset, 12) F(BvhNode, hi, 16) F(BvhNode, count, 28)                 \
-    S(Material, 104) F(Material, type, 12) F(Material, ke, 16) F(Material, ior, 28)                 \
+    S(Material, 168) F(Material, type, 12) F(Material, ke, 16) F(Material, ior, 28)                 \
         F(Material, ks, 32) F(Material, emissive, 44) F(Material, eta, 48)                         \
         F(Material, alpha, 60) F(Material, k, 64) F(Material, flags, 76)                           \
         F(Material, fdr_int, 80) F(Material, spec_weight, 84) F(Material, kd_tex, 88)              \
         F(Material, ks_tex, 92) F(Material, rough_tex, 96) F(Material, alpha_tex, 100)             \
+        F(Material, coat_t, 104)                                                                   \
     S(TextureInfo, 16) F(TextureInfo, width, 4) F(TextureInfo, height, 8) F(TextureInfo, srgb, 12) \
     S(TriangleUVs, 24) F(TriangleUVs, uv1, 8) F(TriangleUVs, uv2, 16)                              \
     S(LightEntry, 8) F(LightEntry, cdf_hi, 4)                                                      \
@@ -283,8 +295,9 @@ typedef struct {
 #define SCENE_BUFFERS(X)                                                                           \
     X(Triangle, tris)                                                                              \
     X(TriangleNormals, normals)                                                                    \
-    X(TriangleUVs, uvs) X(BvhNode, nodes) X(Material, materials) X(LightEntry, lights)             \
-        X(TextureInfo, textures) X(Texel, texels)
+    X(TriangleUVs, uvs)                                                                            \
+    X(BvhNode, nodes) X(Material, materials) X(LightEntry, lights) X(TextureInfo, textures)        \
+        X(Texel, texels)
 #define FILM_BANDS(X) X(FilmWord, band0) X(FilmWord, band1) X(FilmWord, band2) X(FilmWord, band3)
 #define FILM64_FRAC_BITS 24
 

@@ -1,8 +1,7 @@
 #include "scene/material.hpp"
 
 #include "base/color.hpp"
-
-#include <cmath>
+#include "scene/plastic_coat.hpp"
 
 namespace smallmlt {
 
@@ -58,7 +57,13 @@ Material plastic_material(Vec3 kd, Vec3 ks, float ior, float alpha, Microfacet d
     m.ior = ior;
     m.alpha = rough ? alpha : 0.0f;
     m.flags |= distribution_flag(d);
-    m.fdr_int = static_cast<f32>(fresnel_diffuse_reflectance(1.0 / ior));
+    if (rough) {
+        RoughCoat coat = integrate_rough_coat(ior, m.alpha, d == Microfacet::Beckmann);
+        store_coat_transmittance(m, coat);
+        m.fdr_int = static_cast<f32>(coat.inner_reflectance);
+    } else {
+        m.fdr_int = static_cast<f32>(fresnel_diffuse_reflectance(1.0 / ior));
+    }
     double s = rgb_luminance(ks.x, ks.y, ks.z), b = rgb_luminance(kd.x, kd.y, kd.z);
     m.spec_weight = s + b > 0 ? static_cast<f32>(s / (s + b)) : 0.5f;
     return m;
@@ -67,27 +72,6 @@ Material plastic_material(Vec3 kd, Vec3 ks, float ior, float alpha, Microfacet d
 void set_emission(Material& m, Vec3 ke) {
     store3(m.ke, ke);
     m.emissive = (ke.x > 0 || ke.y > 0 || ke.z > 0) ? 1u : 0u;
-}
-
-double fresnel_dielectric(double cos_i, double eta) {
-    double sin2_t = (1 - cos_i * cos_i) / (eta * eta);
-    if (sin2_t >= 1) return 1;
-    double cos_t = std::sqrt(1 - sin2_t);
-    double r_s = (cos_i - eta * cos_t) / (cos_i + eta * cos_t);
-    double r_p = (eta * cos_i - cos_t) / (eta * cos_i + cos_t);
-    return 0.5 * (r_s * r_s + r_p * r_p);
-}
-
-double fresnel_diffuse_reflectance(double eta) {
-    // F has a kink at the critical angle (eta < 1): many intervals.
-    const int n = 1 << 14;
-    double sum = 0;
-    for (int i = 0; i <= n; ++i) {
-        double c = double(i) / n;
-        double w = (i == 0 || i == n) ? 1 : (i % 2 ? 4 : 2);
-        sum += w * fresnel_dielectric(c, eta) * c;
-    }
-    return 2 * sum / (3.0 * n);
 }
 
 } // namespace smallmlt

@@ -25,13 +25,4 @@ Material plastic_material(Vec3 kd, Vec3 ks, float ior, float alpha, Microfacet d
 
 void set_emission(Material& m, Vec3 ke);
 
-// Unpolarized Fresnel reflectance of a smooth interface for cosine cos_i on
-// the incident side and relative index eta = eta_t / eta_i (total internal
-// reflection gives 1).
-double fresnel_dielectric(double cos_i, double eta);
-
-// The cosine-weighted hemispherical average of fresnel_dielectric:
-// 2 * integral over cos in [0, 1] of F(cos, eta) cos, by Simpson's rule.
-double fresnel_diffuse_reflectance(double eta);
-
 } // namespace smallmlt
