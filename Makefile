@@ -30,8 +30,9 @@ RUSTICL_ENV  := OCL_ICD_VENDORS=/etc/OpenCL/vendors/rusticl.icd RUSTICL_ENABLE=s
 FUZZ_PACKAGES := clang libclang-rt-dev
 FUZZ_SECONDS  ?= 60
 FUZZ_SRC      := $(addprefix src/scene/,scene.cpp obj_loader.cpp mtl_loader.cpp mtl_models.cpp \
-                   material.cpp plastic_coat.cpp text_parse.cpp bvh.cpp device_scene.cpp \
-                   sample_layout.cpp texture.cpp mitsuba_xml.cpp mitsuba_transform.cpp mitsuba_shapes.cpp \
+                   material.cpp plastic_coat.cpp ply_loader.cpp text_parse.cpp bvh.cpp \
+                   device_scene.cpp sample_layout.cpp texture.cpp mitsuba_xml.cpp \
+                   mitsuba_transform.cpp mitsuba_shapes.cpp \
                    mitsuba_bsdfs.cpp mitsuba_conductors.cpp mitsuba_scene.cpp)
 FUZZ_TARGETS  := fuzz_scene fuzz_mitsuba
 

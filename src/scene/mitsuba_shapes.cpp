@@ -136,15 +136,23 @@ void vertex_normals(Scene& scene, std::size_t first) {
     }
 }
 
-void add_obj(const XmlObject& o, std::uint32_t m, Scene& scene) {
+// An obj or ply mesh. The readers store v as the file has it, and v = 1 is
+// the top row here: Mitsuba's flip_tex_coords (default true for obj, false
+// for ply) reads v = 1 - v_file, which is that; without it Mitsuba reads
+// v_file as is, so v is flipped here.
+void add_mesh(const XmlObject& o, std::uint32_t m, Scene& scene) {
+    const bool obj = o.type == "obj";
     std::string file = xml_string(o, "filename", "");
     if (file.empty())
-        throw input_error(o.where.file, o.where.line, "shape 'obj' needs a 'filename'");
+        throw input_error(o.where.file, o.where.line, "shape '" + o.type + "' needs a 'filename'");
     std::string path = file[0] == '/' ? file : dir_of(o.where.file) + file;
     std::size_t first = scene.triangles.size();
-    load_obj_geometry(path, o.where.str(), m, scene);
+    if (obj)
+        load_obj_geometry(path, o.where.str(), m, scene);
+    else
+        load_ply_geometry(path, o.where.str(), m, scene);
     const bool face_normals = xml_bool(o, "face_normals", false);
-    const bool flip_uv = xml_bool(o, "flip_tex_coords", true);
+    const bool flip_uv = xml_bool(o, "flip_tex_coords", obj);
     for (std::size_t t = first; t < scene.triangles.size(); ++t) {
         SceneTriangle& tri = scene.triangles[t];
         if (face_normals && tri.smooth) {
@@ -153,9 +161,6 @@ void add_obj(const XmlObject& o, std::uint32_t m, Scene& scene) {
                 n = flat;
             tri.smooth = false;
         }
-        // load_obj_geometry stores the file's v (v = 1 the first row here):
-        // Mitsuba's v = 1 - v_file under flip_tex_coords, so that is its
-        // reading; without the flip, Mitsuba reads v_file as is.
         if (!flip_uv)
             for (auto& uv : tri.uv)
                 uv[1] = 1 - uv[1];
@@ -168,8 +173,8 @@ void add_obj(const XmlObject& o, std::uint32_t m, Scene& scene) {
 void add_mitsuba_shape(const XmlObject& o, std::uint32_t material, Scene& scene) {
     const std::size_t first = scene.triangles.size();
     Mat4 to_world = xml_transform(o, "to_world");
-    if (o.type == "obj") {
-        add_obj(o, material, scene);
+    if (o.type == "obj" || o.type == "ply") {
+        add_mesh(o, material, scene);
     } else if (o.type == "rectangle") {
         add_rectangle(scene, material, Mat4());
     } else if (o.type == "cube") {
@@ -186,7 +191,7 @@ void add_mitsuba_shape(const XmlObject& o, std::uint32_t material, Scene& scene)
     } else {
         throw input_error(o.where.file, o.where.line,
                           "shape '" + o.type +
-                              "' is not read (obj, rectangle, cube, disk and sphere are)");
+                              "' is not read (obj, ply, rectangle, cube, disk and sphere are)");
     }
     if (!(std::abs(to_world.det3()) > 0))
         throw input_error(o.where.file, o.where.line, "'to_world' of the shape is singular");

@@ -79,6 +79,13 @@ void load_obj(const std::string& obj_path, const std::string& where, Scene& scen
 void load_obj_geometry(const std::string& obj_path, const std::string& where,
                        std::uint32_t material, Scene& scene);
 
+// The triangles of a PLY file (ASCII or binary) as Mitsuba's ply shape
+// reads them, appended to scene.triangles, all of material `material`:
+// shading normals from nx, ny, nz, texture coordinates as the file has
+// them (src/scene/ply_loader.cpp). `where` names the shape for errors.
+void load_ply_geometry(const std::string& ply_path, const std::string& where,
+                       std::uint32_t material, Scene& scene);
+
 // Reads a Mitsuba scene file (src/scene/mitsuba_scene.cpp; doc/scene-format.md).
 Scene load_mitsuba_scene(const std::string& path);
 
