@@ -286,6 +286,12 @@ const double kAlphas[3] = {0.1, 0.3, 0.7};
 const double kOutside[3] = {0.95, 0.6, 0.2};
 const double kBothSides[5] = {0.95, 0.6, 0.2, -0.7, -0.3};
 
+// A probability rounded up to the choice slot's 16-bit grid, as the models
+// round their lobe choices.
+double grid_prob(double p) {
+    return std::min(1.0, std::ceil(p * 65536.0) / 65536.0);
+}
+
 // The reference's rough coat of index 1.5 (ref::rough_coat at the model's
 // COAT_T_SIZE nodes), integrated once per (alpha, distribution).
 const ref::Coat& reference_coat(double alpha, bool beckmann) {
@@ -344,7 +350,8 @@ std::vector<ModelCase> rough_plastic_cases() {
 }
 
 bool has_dirac_lobe(const Material& m) {
-    return m.type == MAT_CONDUCTOR || m.type == MAT_DIELECTRIC || m.type == MAT_PLASTIC;
+    return m.type == MAT_CONDUCTOR || m.type == MAT_DIELECTRIC || m.type == MAT_PLASTIC ||
+           m.type == MAT_THIN_DIELECTRIC;
 }
 
 // ---- Chi-square of a model's samples over the sphere ------------------------
@@ -707,7 +714,7 @@ TEST(BsdfChi2, RoughPlastic) {
     chi2_cases(rough_plastic_cases(), 5000);
 }
 
-// The smooth conductor and dielectric are Dirac lobes alone: every sample
+// The smooth conductor, dielectric and thin dielectric are Dirac lobes alone: every sample
 // has pdf_w 0 and a weight, and eval and pdf_w are 0 everywhere (checked at
 // the sampled directions and on the sphere's grid).
 TEST(BsdfChi2, DiracModelsHaveNoDensity) {
@@ -717,6 +724,8 @@ TEST(BsdfChi2, DiracModelsHaveNoDensity) {
                          conductor_material({1, 1, 1}, kGoldEta, kGoldK, 0.0f), co});
     for (double co : kBothSides)
         cases.push_back({case_name("dielectric", co), dielectric_material(1.5f, 0.0f), co});
+    for (double co : kBothSides)
+        cases.push_back({case_name("thin dielectric", co), thin_dielectric_material(1.5f), co});
     for (const ModelCase& c : cases) {
         D3 wo = ref::incident(c.cos_o);
         std::vector<Sample> s = draw_samples(c.m, wo, 77, 1u << 12);
@@ -729,6 +738,40 @@ TEST(BsdfChi2, DiracModelsHaveNoDensity) {
         EXPECT_EQ(not_dirac, 0u) << c.name;
         EXPECT_EQ(density, 0u) << c.name << ": eval or pdf_w not 0 at the sampled directions";
         EXPECT_EQ(std::accumulate(p.begin(), p.end(), 0.0), 0.0) << c.name << ": pdf_w on the grid";
+    }
+}
+
+// The thin dielectric (index 1.5), from both sides: every sample is the
+// mirror direction or wo passed straight through (-wo); the share of
+// reflections is the rounded R = 2F / (1 + F), F the host's Fresnel term,
+// within the binomial quantile at 1e-3 over the five angles (Bonferroni);
+// the weights are exactly R / p and (1 - R) / (1 - p) (relative 1e-5), so
+// that the sheet conserves energy.
+TEST(BsdfThinDielectric, ReflectsTwoFOverOnePlusFAndPassesTheRestStraight) {
+    const std::uint32_t n = 1u << 16;
+    const double z = test::normal_quantile(1 - kAlpha / (2.0 * 5));
+    Material m = thin_dielectric_material(1.5f);
+    std::uint64_t seed = 91;
+    for (double co : kBothSides) {
+        D3 wo = ref::incident(co);
+        double f = ref::fresnel(std::fabs(co), 1.5), r = 2 * f / (1 + f), p = grid_prob(r);
+        std::vector<Sample> s = draw_samples(m, wo, seed++, n, false);
+        std::size_t reflected = 0, other = 0, bad_weight = 0;
+        for (const Sample& x : s) {
+            bool refl = std::fabs(x.wi.x + wo.x) < 1e-6 && std::fabs(x.wi.z - wo.z) < 1e-6;
+            bool through = std::fabs(x.wi.x + wo.x) < 1e-6 && std::fabs(x.wi.z + wo.z) < 1e-6;
+            if (refl) ++reflected;
+            if (!refl && !through) ++other;
+            double want = refl ? r / p : (1 - r) / (1 - p);
+            for (double w : x.weight)
+                if (!(std::fabs(w - want) <= 1e-5 * want)) ++bad_weight;
+        }
+        double share = double(reflected) / n, se = std::sqrt(p * (1 - p) / n);
+        std::printf("  thin dielectric cos_o %+.2f: R %.5f, reflected %.5f (bound %.5f)\n", co, r,
+                    share, z * se);
+        EXPECT_EQ(other, 0u) << "cos_o " << co << ": neither mirrored nor straight through";
+        EXPECT_NEAR(share, p, z * se) << "cos_o " << co;
+        EXPECT_EQ(bad_weight, 0u) << "cos_o " << co;
     }
 }
 
@@ -1179,10 +1222,6 @@ TEST(BsdfReciprocity, RoughDielectric) {
 // wi.h)^2) and of the plastics (the coat's q and the base's cosine). All to
 // a relative 1e-3 (float against double).
 namespace {
-
-double grid_prob(double p) {
-    return std::min(1.0, std::ceil(p * 65536.0) / 65536.0);
-}
 
 struct RefCheck {
     std::size_t bad_f = 0, bad_pdf = 0, positive = 0;

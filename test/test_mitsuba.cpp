@@ -257,6 +257,10 @@ TEST(MitsubaBsdfs, ParametersAndDefaults) {
         R"(<bsdf type="roughdielectric"><string name="int_ior" value="Water"/><float name="ext_ior" value="1"/><string name="distribution" value="ggx"/></bsdf>)");
     EXPECT_EQ(water.type, u32(MAT_ROUGH_DIELECTRIC));
     EXPECT_FLOAT_EQ(water.ior, 1.333f);
+    Material thin = bsdf(
+        R"(<bsdf type="thindielectric"><float name="int_ior" value="1.33"/><float name="ext_ior" value="1"/></bsdf>)");
+    EXPECT_EQ(thin.type, u32(MAT_THIN_DIELECTRIC));
+    EXPECT_FLOAT_EQ(thin.ior, 1.33f);
     Material p = bsdf(R"(<bsdf type="plastic"/>)");
     EXPECT_EQ(p.type, u32(MAT_PLASTIC));
     EXPECT_FLOAT_EQ(p.ior, float(1.49 / 1.000277));

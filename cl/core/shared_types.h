@@ -34,7 +34,8 @@ typedef float f32;
     X(ROUGH_CONDUCTOR, 3, MAT_USES_PAIR | MAT_USES_NEE)                                            \
     X(ROUGH_DIELECTRIC, 4, MAT_USES_PAIR | MAT_USES_CHOICE | MAT_USES_NEE)                         \
     X(PLASTIC, 5, MAT_USES_PAIR | MAT_USES_CHOICE | MAT_USES_NEE)                                  \
-    X(ROUGH_PLASTIC, 6, MAT_USES_PAIR | MAT_USES_CHOICE | MAT_USES_NEE)
+    X(ROUGH_PLASTIC, 6, MAT_USES_PAIR | MAT_USES_CHOICE | MAT_USES_NEE)                            \
+    X(THIN_DIELECTRIC, 7, MAT_USES_CHOICE)
 
 #define MAT_TYPE_ID(NAME, id, uses) MAT_##NAME = id,
 enum { MAT_MODELS(MAT_TYPE_ID) MAT_TYPES };
@@ -296,8 +297,8 @@ typedef struct {
     X(Triangle, tris)                                                                              \
     X(TriangleNormals, normals)                                                                    \
     X(TriangleUVs, uvs)                                                                            \
-    X(BvhNode, nodes) X(Material, materials) X(LightEntry, lights) X(TextureInfo, textures)        \
-        X(Texel, texels)
+    X(BvhNode, nodes)                                                                              \
+    X(Material, materials) X(LightEntry, lights) X(TextureInfo, textures) X(Texel, texels)
 #define FILM_BANDS(X) X(FilmWord, band0) X(FilmWord, band1) X(FilmWord, band2) X(FilmWord, band3)
 #define FILM64_FRAC_BITS 24
 

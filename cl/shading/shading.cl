@@ -31,7 +31,8 @@ inline bool shading_has_nee(const Material* m) {
 }
 
 inline bool shading_opaque(const Material* m) {
-    return m->type != MAT_DIELECTRIC && m->type != MAT_ROUGH_DIELECTRIC;
+    return m->type != MAT_DIELECTRIC && m->type != MAT_ROUGH_DIELECTRIC &&
+           m->type != MAT_THIN_DIELECTRIC;
 }
 
 /* The model's sample in its local frame (wo.z > 0 for opaque models). */
@@ -61,6 +62,10 @@ inline BsdfSample shading_local_sample(const Material* m, float3 wo, float uc, f
     case MAT_PLASTIC:
     case MAT_ROUGH_PLASTIC:
         return plastic_sample(m, wo, uc, u1, u2);
+#endif
+#if LAYOUT_HAS_THIN_DIELECTRIC
+    case MAT_THIN_DIELECTRIC:
+        return thin_dielectric_sample(m, wo, uc, u1, u2);
 #endif
     default:
         return bsdf_none();

@@ -40,6 +40,7 @@ const Row kTable[] = {
     {Stage::Shading,  "cl/shading/dielectric.cl",          true,  true},
     {Stage::Shading,  "cl/shading/rough_dielectric.cl",    true,  true},
     {Stage::Shading,  "cl/shading/plastic.cl",             true,  true},
+    {Stage::Shading,  "cl/shading/thin_dielectric.cl",     true,  true},
     {Stage::Shading,  "cl/shading/light.cl",               true,  true},
     {Stage::Shading,  "cl/shading/shading.cl",             true,  true},
     {Stage::Path,     "cl/path/path.cl",                   true,  true},

@@ -49,6 +49,14 @@ Material dielectric_material(float ior, float alpha, Microfacet d) {
     return m;
 }
 
+Material thin_dielectric_material(float ior) {
+    Material m = base(MAT_THIN_DIELECTRIC);
+    store3(m.ks, {1, 1, 1});
+    m.ior = ior;
+    m.flags = 0; // both sides are its own
+    return m;
+}
+
 Material plastic_material(Vec3 kd, Vec3 ks, float ior, float alpha, Microfacet d) {
     bool rough = alpha >= kSmoothAlpha;
     Material m = base(rough ? MAT_ROUGH_PLASTIC : MAT_PLASTIC);

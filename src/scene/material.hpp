@@ -20,6 +20,8 @@ Material diffuse_material(Vec3 kd);
 // eta 0, k 1 reflects everything (a mirror of reflectance ks).
 Material conductor_material(Vec3 ks, Vec3 eta, Vec3 k, float alpha, Microfacet d = Microfacet::Ggx);
 Material dielectric_material(float ior, float alpha, Microfacet d = Microfacet::Ggx);
+// A thin sheet of index ior: reflects 2F / (1 + F), passes the rest straight.
+Material thin_dielectric_material(float ior);
 // A diffuse base of albedo kd under a dielectric coat of index ior.
 Material plastic_material(Vec3 kd, Vec3 ks, float ior, float alpha, Microfacet d = Microfacet::Ggx);
 

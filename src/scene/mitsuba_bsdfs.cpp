@@ -129,6 +129,13 @@ Material dielectric(const XmlObject& o, bool rough, std::vector<std::string>& wa
     return dielectric_material(float(eta), alpha_of(o), d);
 }
 
+Material thin_dielectric(const XmlObject& o, std::vector<std::string>& warnings) {
+    double eta = ior_of(o, "int_ior", 1.5046) / ior_of(o, "ext_ior", 1.000277);
+    unit_factor(o, "specular_reflectance", warnings);
+    unit_factor(o, "specular_transmittance", warnings);
+    return thin_dielectric_material(float(eta));
+}
+
 Material plastic(const XmlObject& o, bool rough, std::vector<std::string>& warnings) {
     Vec3 kd = color_of(o, "diffuse_reflectance", {0.5f, 0.5f, 0.5f});
     Vec3 ks = color_of(o, "specular_reflectance", {1, 1, 1});
@@ -184,15 +191,18 @@ Material mitsuba_material(const XmlObject& o, std::vector<std::string>& warnings
     } else if (t == "dielectric" || t == "roughdielectric") {
         if (two_sided) fail(o, "a dielectric inside twosided is not read (it transmits)");
         m = dielectric(*b, t == "roughdielectric", warnings);
+    } else if (t == "thindielectric") {
+        if (two_sided) fail(o, "a dielectric inside twosided is not read (it transmits)");
+        m = thin_dielectric(*b, warnings);
     } else if (t == "plastic" || t == "roughplastic") {
         m = plastic(*b, t == "roughplastic", warnings);
     } else if (t == "twosided") {
         fail(*b, "twosided inside twosided");
     } else {
         fail(*b, "is not read (diffuse, twosided, conductor, roughconductor, dielectric, "
-                 "roughdielectric, plastic and roughplastic are)");
+                 "roughdielectric, thindielectric, plastic and roughplastic are)");
     }
-    if (t != "dielectric" && t != "roughdielectric") {
+    if (t != "dielectric" && t != "roughdielectric" && t != "thindielectric") {
         if (two_sided)
             m.flags |= MAT_FLAG_TWO_SIDED;
         else
