@@ -26,6 +26,25 @@ inline float3 bsdf_reflect_z(float3 wo) {
     return (float3)(-wo.x, -wo.y, wo.z);
 }
 
+/* Two Dirac lobes of a smooth interface: the mirror direction of wo,
+ * carrying r, and wt, carrying (1 - r) eta^2 (eta: the radiance scaling of
+ * a refraction, 1 for none). The reflection is chosen with probability r
+ * rounded to the choice slot's grid (layout_quantize_prob), so that each
+ * weight is exact; ks scales both. */
+inline BsdfSample bsdf_dirac_pair(float3 wo, float3 wt, float r, float eta, float3 ks, float uc) {
+    float p_reflect = layout_quantize_prob(r, LAYOUT_CHOICE_BITS);
+    BsdfSample s;
+    s.pdf_w = 0.0f;
+    if (uc < p_reflect) {
+        s.wi = bsdf_reflect_z(wo);
+        s.weight = ks * (r / p_reflect);
+    } else {
+        s.wi = wt;
+        s.weight = ks * ((1.0f - r) / (1.0f - p_reflect) * eta * eta);
+    }
+    return s;
+}
+
 /* Mirror reflection of wo about unit microfacet normal m. */
 inline float3 bsdf_reflect(float3 wo, float3 m) {
     return 2.0f * dot(wo, m) * m - wo;

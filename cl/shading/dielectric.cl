@@ -10,16 +10,7 @@ inline BsdfSample dielectric_sample(const Material* m, float3 wo, float uc, floa
     float eta = entering ? 1.0f / m->ior : m->ior;
     float cos_i = fabs(wo.z), cos_t;
     float f = fresnel_dielectric(cos_i, eta, &cos_t);
-    float p_reflect = layout_quantize_prob(f, LAYOUT_CHOICE_BITS);
-    BsdfSample s;
-    s.pdf_w = 0.0f;
-    if (uc < p_reflect) {
-        s.wi = bsdf_reflect_z(wo);
-        s.weight = bsdf_rgb(m->ks) * (f / p_reflect);
-    } else {
-        float side = entering ? 1.0f : -1.0f;
-        s.wi = normalize((float3)(-wo.x * eta, -wo.y * eta, -side * cos_t));
-        s.weight = bsdf_rgb(m->ks) * ((1.0f - f) / (1.0f - p_reflect) * eta * eta);
-    }
-    return s;
+    float side = entering ? 1.0f : -1.0f;
+    float3 wt = normalize((float3)(-wo.x * eta, -wo.y * eta, -side * cos_t));
+    return bsdf_dirac_pair(wo, wt, f, eta, bsdf_rgb(m->ks), uc);
 }

@@ -12,16 +12,5 @@ inline BsdfSample thin_dielectric_sample(const Material* m, float3 wo, float uc,
     (void)u2;
     float cos_t;
     float f = fresnel_dielectric(fabs(wo.z), 1.0f / m->ior, &cos_t);
-    float r = 2.0f * f / (1.0f + f);
-    float p_reflect = layout_quantize_prob(r, LAYOUT_CHOICE_BITS);
-    BsdfSample s;
-    s.pdf_w = 0.0f;
-    if (uc < p_reflect) {
-        s.wi = bsdf_reflect_z(wo);
-        s.weight = bsdf_rgb(m->ks) * (r / p_reflect);
-    } else {
-        s.wi = -wo;
-        s.weight = bsdf_rgb(m->ks) * ((1.0f - r) / (1.0f - p_reflect));
-    }
-    return s;
+    return bsdf_dirac_pair(wo, -wo, 2.0f * f / (1.0f + f), 1.0f, bsdf_rgb(m->ks), uc);
 }
