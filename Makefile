@@ -33,7 +33,7 @@ FUZZ_SRC      := $(addprefix src/scene/,scene.cpp obj_loader.cpp mtl_loader.cpp 
                    material.cpp plastic_coat.cpp ply_loader.cpp text_parse.cpp bvh.cpp \
                    device_scene.cpp sample_layout.cpp texture.cpp mitsuba_xml.cpp \
                    mitsuba_transform.cpp mitsuba_shapes.cpp \
-                   mitsuba_bsdfs.cpp mitsuba_conductors.cpp mitsuba_scene.cpp)
+                   mitsuba_bsdfs.cpp mitsuba_conductors.cpp mitsuba_scene.cpp mitsuba_textures.cpp)
 FUZZ_TARGETS  := fuzz_scene fuzz_mitsuba
 
 # Kernel files: the product's (cl/, by stage) and the test binary's probes.

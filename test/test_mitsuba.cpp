@@ -8,9 +8,11 @@
 #include "scene/mitsuba_bsdfs.hpp"
 #include "scene/mitsuba_shapes.hpp"
 #include "scene/mitsuba_xml.hpp"
+#include "scene/texture.hpp"
 #include "test_support.hpp"
 
 #include <gtest/gtest.h>
+#include <stb/stb_image_write.h>
 
 #include <cmath>
 #include <cstring>
@@ -275,6 +277,113 @@ TEST(MitsubaBsdfs, ParametersAndDefaults) {
     EXPECT_NE(w[1].find("'roughness' of bsdf 'diffuse' is not read"), std::string::npos) << w[1];
     EXPECT_EQ(mitsuba_named_ior("Diamond"), 2.419);
     EXPECT_LT(mitsuba_named_ior("unobtainium"), 0);
+}
+
+namespace {
+
+// A scene of one rectangle of `bsdf`, with t.png (2 x 1 RGB: (10, 20, 30),
+// (200, 100, 50)) beside it.
+Scene textured(const std::string& dir_name, const std::string& bsdf) {
+    std::string dir = test::scratch_dir("mitsuba-" + dir_name);
+    const unsigned char px[6] = {10, 20, 30, 200, 100, 50};
+    if (!stbi_write_png((dir + "/t.png").c_str(), 2, 1, 3, px, 6)) throw std::runtime_error("png");
+    test::write_file(dir + "/s.xml", scene_xml("<shape type=\"rectangle\">\n" + bsdf + "</shape>"));
+    return load_scene(dir + "/s.xml");
+}
+
+const Material& last_material(const Scene& s) {
+    return s.materials[s.triangles.back().material];
+}
+
+std::string textured_error(const std::string& bsdf) {
+    try {
+        textured("texture-errors", bsdf);
+    } catch (const InputError& e) {
+        std::string msg = e.what();
+        std::size_t at = msg.find("s.xml:");
+        return at == std::string::npos ? msg : msg.substr(at);
+    }
+    return "";
+}
+
+} // namespace
+
+// bitmap: the image as a colour texture (sRGB) of the material, bilinear,
+// or linear data (raw) looked up at the nearest texel; the material's
+// constant is the texture's mean linear colour. checkerboard: a 2 x 2
+// texture of its two colours, 8-bit linear, looked up at the nearest texel,
+// color0 in the top left and bottom right (Mitsuba's v is 1 - v here).
+// Every texture error names its line.
+TEST(MitsubaTextures, BitmapAndCheckerboardBecomeTheMaterialsTextures) {
+    Scene s = textured("bitmap", R"(<bsdf type="diffuse"><texture type="bitmap" name="reflectance">
+        <string name="filename" value="t.png"/></texture></bsdf>)");
+    const Material& d = last_material(s);
+    ASSERT_NE(d.kd_tex, TEX_NONE);
+    const SceneTexture& t = s.textures[d.kd_tex];
+    EXPECT_EQ(t.kind, TextureKind::Colour);
+    EXPECT_FALSE(t.nearest);
+    ASSERT_EQ(t.texels.size(), 2u);
+    EXPECT_EQ(t.texels[1], 200u | 100u << 8 | 50u << 16 | 255u << 24);
+    EXPECT_NEAR(d.kd[0], (srgb_to_linear(10 / 255.0) + srgb_to_linear(200 / 255.0)) / 2, 1e-6);
+
+    Scene r =
+        textured("bitmap-raw",
+                 R"(<bsdf type="roughplastic"><texture type="bitmap" name="diffuse_reflectance">
+        <string name="filename" value="t.png"/><boolean name="raw" value="true"/>
+        <string name="filter_type" value="nearest"/></texture></bsdf>)");
+    const Material& rp = last_material(r);
+    EXPECT_EQ(r.textures[rp.kd_tex].kind, TextureKind::Data);
+    EXPECT_TRUE(r.textures[rp.kd_tex].nearest);
+    EXPECT_NEAR(rp.kd[1], (20 + 100) / 510.0, 1e-6) << "raw: linear";
+
+    Scene c = textured(
+        "checker", R"(<bsdf type="plastic"><texture type="checkerboard" name="diffuse_reflectance">
+        <rgb name="color0" value="0.8 0.4 0.2"/></texture></bsdf>)");
+    const Material& p = last_material(c);
+    const SceneTexture& ct = c.textures[p.kd_tex];
+    EXPECT_TRUE(ct.nearest);
+    EXPECT_EQ(ct.kind, TextureKind::Data);
+    const std::uint32_t c0 = 204u | 102u << 8 | 51u << 16 | 255u << 24,
+                        c1 = 51u | 51u << 8 | 51u << 16 | 255u << 24; // color1's default 0.2
+    EXPECT_EQ(ct.texels, (std::vector<std::uint32_t>{c0, c1, c1, c0}));
+    EXPECT_NEAR(p.kd[0], 0.5, 1e-6);
+
+    Scene k = textured(
+        "conductor",
+        R"(<bsdf type="conductor"><texture type="checkerboard" name="specular_reflectance"/></bsdf>)");
+    EXPECT_NE(last_material(k).ks_tex, TEX_NONE);
+    Scene w = textured("wrap", R"(<bsdf type="diffuse"><texture type="bitmap" name="reflectance">
+        <string name="filename" value="t.png"/><string name="wrap_mode" value="clamp"/></texture></bsdf>)");
+    bool warned = false;
+    for (const std::string& m : w.warnings)
+        warned |= m.find("s.xml:15: warning: wrap_mode 'clamp'") != std::string::npos;
+    EXPECT_TRUE(warned);
+
+    struct Row {
+        const char* bsdf;
+        const char* want;
+    } rows[] = {
+        {R"(<bsdf type="diffuse"><texture type="checkerboard" name="reflectance">
+            <transform name="to_uv"><scale value="4"/></transform></texture></bsdf>)",
+         "s.xml:15: 'to_uv' other than the identity is not read"},
+        {R"(<bsdf type="roughconductor">
+            <texture type="checkerboard" name="alpha"/></bsdf>)",
+         "s.xml:15: texture 'checkerboard' as 'alpha' is not read"},
+        {R"(<bsdf type="diffuse">
+            <texture type="perlin" name="reflectance"/></bsdf>)",
+         "s.xml:15: texture 'perlin': is not read (bitmap and checkerboard are)"},
+        {R"(<bsdf type="diffuse">
+            <texture type="bitmap" name="reflectance"/></bsdf>)",
+         "s.xml:15: texture 'bitmap': needs a 'filename'"},
+        {R"(<bsdf type="diffuse"><texture type="checkerboard" name="reflectance">
+            <rgb name="color1" value="2"/></texture></bsdf>)",
+         "texture 'checkerboard': colours must lie in [0, 1]"},
+    };
+    for (const Row& row : rows) {
+        std::string got = textured_error(row.bsdf);
+        EXPECT_NE(got.find(row.want), std::string::npos)
+            << "got: " << got << "\nwant: " << row.want;
+    }
 }
 
 TEST(MitsubaScene, SensorFilmAndIntegrator) {

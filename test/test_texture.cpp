@@ -116,6 +116,24 @@ TEST(Texture, LookupIsBilinearWithWrapInLinearLight) {
         << "a data texture is linear";
 }
 
+// TEX_FLAG_NEAREST: a lookup is the texel the point falls in, wrapping,
+// up to the texel's edge (no blend with its neighbour).
+TEST(Texture, NearestLookupTakesTheTexelThePointFallsIn) {
+    const std::uint32_t a = rgba(255, 0, 0, 255), b = rgba(0, 255, 0, 255),
+                        c = rgba(0, 0, 255, 255), d = rgba(51, 102, 153, 255);
+    SceneTexture t = texture(2, 2, TextureKind::Data, {a, b, c, d}); // top row a b
+    t.nearest = true;
+    std::vector<cl_float2> uv = {{{0.01f, 0.99f}}, {{0.49f, 0.51f}}, {{0.51f, 0.99f}},
+                                 {{0.26f, 0.49f}}, {{0.99f, 0.01f}}, {{1.49f, 0.51f}},
+                                 {{-0.25f, 1.25f}}};
+    const std::uint32_t want[] = {a, a, b, c, d, a, d};
+    Lookup l = device_lookup(scene_with(t), uv);
+    for (std::size_t i = 0; i < uv.size(); ++i)
+        for (int ch = 0; ch < 3; ++ch)
+            EXPECT_NEAR(l.rgba[i].s[ch], double((want[i] >> (8 * ch)) & 0xFFu) / 255.0, 1e-6)
+                << "lookup " << i << " channel " << ch;
+}
+
 // A cut-out mask: a hole where the filtered alpha is below 1/2.
 TEST(Texture, CutOutHasHolesWhereAlphaIsBelowAHalf) {
     SceneTexture t = texture(2, 1, TextureKind::Mask, {rgba(0, 0, 0, 0), rgba(0, 0, 0, 255)});

@@ -142,14 +142,18 @@ typedef struct {
 
 /* A texture in the texel buffer: width x height texels from texel `first`,
  * row-major from the top row (v = 1), each 8-bit RGBA with R in the low
- * byte; srgb 1: colour values, sRGB-encoded and decoded at lookup (else
- * linear data). 16 bytes. */
+ * byte; flags: TEX_FLAG_SRGB, colour values, sRGB-encoded and decoded at
+ * lookup (else linear data); TEX_FLAG_NEAREST, looked up at the texel the
+ * point falls in (else bilinearly). 16 bytes. */
 typedef struct {
     u32 first;
     u32 width;
     u32 height;
-    u32 srgb;
+    u32 flags;
 } TextureInfo;
+
+#define TEX_FLAG_SRGB 1u
+#define TEX_FLAG_NEAREST 2u
 
 typedef u32 Texel;
 
@@ -270,7 +274,7 @@ typedef struct {
         F(Material, fdr_int, 80) F(Material, spec_weight, 84) F(Material, kd_tex, 88)              \
         F(Material, ks_tex, 92) F(Material, rough_tex, 96) F(Material, alpha_tex, 100)             \
         F(Material, coat_t, 104)                                                                   \
-    S(TextureInfo, 16) F(TextureInfo, width, 4) F(TextureInfo, height, 8) F(TextureInfo, srgb, 12) \
+    S(TextureInfo, 16) F(TextureInfo, width, 4) F(TextureInfo, height, 8) F(TextureInfo, flags, 12) \
     S(TriangleUVs, 24) F(TriangleUVs, uv1, 8) F(TriangleUVs, uv2, 16)                              \
     S(LightEntry, 8) F(LightEntry, cdf_hi, 4)                                                      \
     S(Frame, 64) F(Frame, width, 12) F(Frame, top_left, 16) F(Frame, height, 28)                   \

@@ -1,5 +1,6 @@
 /* Textures: 8-bit RGBA texels (TextureInfo, cl/core/shared_types.h), looked
- * up bilinearly with wrap at (u, v), v = 1 the top row; colour textures are
+ * up bilinearly (or at the nearest texel) with wrap at (u, v), v = 1 the
+ * top row; colour textures are
  * decoded from sRGB per texel, before filtering. A material's textures
  * replace its constants at the hit (tex_apply); a cut-out texture makes
  * holes where its alpha is below 1/2 (tex_is_hole). */
@@ -15,7 +16,7 @@ inline float4 tex_texel(const __global TextureInfo* t, const __global Texel* tex
     float4 c = (float4)((float)(v & 0xFFu), (float)((v >> 8) & 0xFFu), (float)((v >> 16) & 0xFFu),
                         (float)(v >> 24)) *
                (1.0f / 255.0f);
-    if (t->srgb) {
+    if ((t->flags & TEX_FLAG_SRGB) != 0u) {
         c.x = tex_srgb_to_linear(c.x);
         c.y = tex_srgb_to_linear(c.y);
         c.z = tex_srgb_to_linear(c.z);
@@ -23,10 +24,14 @@ inline float4 tex_texel(const __global TextureInfo* t, const __global Texel* tex
     return c;
 }
 
-/* RGBA of texture `index` at uv, bilinear between texel centres, wrapping. */
+/* RGBA of texture `index` at uv, wrapping: bilinear between texel centres,
+ * or the texel uv falls in (TEX_FLAG_NEAREST). */
 inline float4 tex_lookup(const __global TextureInfo* infos, const __global Texel* texels,
                          uint index, float2 uv) {
     const __global TextureInfo* t = &infos[index];
+    if ((t->flags & TEX_FLAG_NEAREST) != 0u)
+        return tex_texel(t, texels, (int)floor(uv.x * (float)t->width),
+                         (int)floor((1.0f - uv.y) * (float)t->height));
     float fx = uv.x * (float)t->width - 0.5f, fy = (1.0f - uv.y) * (float)t->height - 0.5f;
     float x0 = floor(fx), y0 = floor(fy);
     float ax = fx - x0, ay = fy - y0;

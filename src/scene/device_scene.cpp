@@ -115,7 +115,8 @@ DeviceScene prepare_scene(const Scene& scene) {
         info.first = static_cast<u32>(ds.texels.size());
         info.width = static_cast<u32>(t.width);
         info.height = static_cast<u32>(t.height);
-        info.srgb = t.kind == TextureKind::Colour ? 1u : 0u;
+        info.flags = (t.kind == TextureKind::Colour ? TEX_FLAG_SRGB : 0u) |
+                     (t.nearest ? TEX_FLAG_NEAREST : 0u);
         ds.textures.push_back(info);
         ds.texture_files.push_back(t.file);
         ds.texels.insert(ds.texels.end(), t.texels.begin(), t.texels.end());

@@ -2,6 +2,7 @@
 
 #include "base/error.hpp"
 #include "scene/material.hpp"
+#include "scene/mitsuba_textures.hpp"
 
 #include <algorithm>
 #include <cctype>
@@ -51,14 +52,29 @@ double ior_of(const XmlObject& o, const std::string& name, double fallback) {
     return v;
 }
 
-// A colour parameter: a constant (rgb, uniform spectrum or float); a
-// texture object under that name is not read yet.
+// A colour parameter that cannot be a texture: a constant (rgb, uniform
+// spectrum or float).
 Vec3 color_of(const XmlObject& o, const std::string& name, Vec3 fallback) {
     for (const XmlObject* c : o.children)
         if (c->tag == "texture" && c->name == name)
             throw input_error(c->where.file, c->where.line,
                               "texture '" + c->type + "' as '" + name +
-                                  "': textures of Mitsuba scenes are not read yet (give <rgb>)");
+                                  "' is not read (textures are read as reflectances: "
+                                  "reflectance, diffuse_reflectance, specular_reflectance)");
+    return xml_color(o, name, fallback);
+}
+
+// A colour parameter that may be a texture: its constant, or the texture's
+// index in *tex (appended to scene.textures) and its mean colour.
+Vec3 texturable(const XmlObject& o, const std::string& name, Vec3 fallback, Scene& scene,
+                u32* tex) {
+    for (const XmlObject* c : o.children)
+        if (c->tag == "texture" && c->name == name) {
+            if (o.find(name)) fail(o, "'" + name + "' is given twice");
+            Vec3 mean;
+            *tex = add_mitsuba_texture(*c, scene, &mean);
+            return mean;
+        }
     return xml_color(o, name, fallback);
 }
 
@@ -82,8 +98,6 @@ float alpha_of(const XmlObject& o) {
         a = u;
     }
     if (!(a >= 0)) fail(o, "alpha must be at least 0");
-    for (const XmlObject* c : o.children)
-        if (c->tag == "texture") color_of(o, c->name, {});
     // Mitsuba samples visible normals or not; the image is the same.
     xml_bool(o, "sample_visible", true);
     return float(a); // below kSmoothAlpha: the smooth model
@@ -99,7 +113,7 @@ void unit_factor(const XmlObject& o, const std::string& name, std::vector<std::s
                            o.type + "' is read as 1 (the dielectric has no such factor)");
 }
 
-Material conductor(const XmlObject& o, bool rough) {
+Material conductor(const XmlObject& o, bool rough, Scene& scene) {
     Vec3 eta{0, 0, 0}, k{1, 1, 1};
     const bool named = o.find("material") != nullptr;
     if (named && (o.find("eta") || o.find("k")))
@@ -113,10 +127,13 @@ Material conductor(const XmlObject& o, bool rough) {
         eta = color_of(o, "eta", {0, 0, 0});
         k = color_of(o, "k", {1, 1, 1});
     }
-    Vec3 ks = color_of(o, "specular_reflectance", {1, 1, 1});
+    u32 ks_tex = TEX_NONE;
+    Vec3 ks = texturable(o, "specular_reflectance", {1, 1, 1}, scene, &ks_tex);
     Microfacet d = rough ? distribution_of(o) : Microfacet::Ggx;
     float alpha = rough ? alpha_of(o) : 0.0f;
-    return conductor_material(ks, eta, k, alpha, d);
+    Material m = conductor_material(ks, eta, k, alpha, d);
+    m.ks_tex = ks_tex;
+    return m;
 }
 
 Material dielectric(const XmlObject& o, bool rough, std::vector<std::string>& warnings) {
@@ -136,19 +153,26 @@ Material thin_dielectric(const XmlObject& o, std::vector<std::string>& warnings)
     return thin_dielectric_material(float(eta));
 }
 
-Material plastic(const XmlObject& o, bool rough, std::vector<std::string>& warnings) {
-    Vec3 kd = color_of(o, "diffuse_reflectance", {0.5f, 0.5f, 0.5f});
-    Vec3 ks = color_of(o, "specular_reflectance", {1, 1, 1});
+Material plastic(const XmlObject& o, bool rough, Scene& scene) {
+    std::vector<std::string>& warnings = scene.warnings;
+    u32 kd_tex = TEX_NONE, ks_tex = TEX_NONE;
+    Vec3 kd = texturable(o, "diffuse_reflectance", {0.5f, 0.5f, 0.5f}, scene, &kd_tex);
+    Vec3 ks = texturable(o, "specular_reflectance", {1, 1, 1}, scene, &ks_tex);
     double eta = ior_of(o, "int_ior", 1.49) / ior_of(o, "ext_ior", 1.000277);
     if (!(eta > 1)) fail(o, "int_ior must exceed ext_ior");
     const XmlProperty* nl = o.find("nonlinear");
     if (xml_bool(o, "nonlinear", false))
         warnings.push_back(nl->where.str() + ": warning: 'nonlinear' of " + o.tag + " '" + o.type +
                            "' is read as false (the linear sum of inner reflections)");
-    if (!rough) return plastic_material(kd, ks, float(eta), 0.0f);
-    if (o.find("alpha_u") || o.find("alpha_v")) fail(o, "anisotropic roughness is not read");
-    Microfacet d = distribution_of(o);
-    return plastic_material(kd, ks, float(eta), alpha_of(o), d);
+    Material m = plastic_material(kd, ks, float(eta), 0.0f);
+    if (rough) {
+        if (o.find("alpha_u") || o.find("alpha_v")) fail(o, "anisotropic roughness is not read");
+        Microfacet d = distribution_of(o);
+        m = plastic_material(kd, ks, float(eta), alpha_of(o), d);
+    }
+    m.kd_tex = kd_tex;
+    m.ks_tex = ks_tex;
+    return m;
 }
 
 } // namespace
@@ -168,7 +192,8 @@ Material mitsuba_default_material(bool emitter) {
     return m;
 }
 
-Material mitsuba_material(const XmlObject& o, std::vector<std::string>& warnings) {
+Material mitsuba_material(const XmlObject& o, Scene& scene) {
+    std::vector<std::string>& warnings = scene.warnings;
     Material m{};
     bool two_sided = false;
     const XmlObject* b = &o;
@@ -185,9 +210,11 @@ Material mitsuba_material(const XmlObject& o, std::vector<std::string>& warnings
     }
     const std::string& t = b->type;
     if (t == "diffuse") {
-        m = diffuse_material(color_of(*b, "reflectance", {0.5f, 0.5f, 0.5f}));
+        u32 kd_tex = TEX_NONE;
+        m = diffuse_material(texturable(*b, "reflectance", {0.5f, 0.5f, 0.5f}, scene, &kd_tex));
+        m.kd_tex = kd_tex;
     } else if (t == "conductor" || t == "roughconductor") {
-        m = conductor(*b, t == "roughconductor");
+        m = conductor(*b, t == "roughconductor", scene);
     } else if (t == "dielectric" || t == "roughdielectric") {
         if (two_sided) fail(o, "a dielectric inside twosided is not read (it transmits)");
         m = dielectric(*b, t == "roughdielectric", warnings);
@@ -195,7 +222,7 @@ Material mitsuba_material(const XmlObject& o, std::vector<std::string>& warnings
         if (two_sided) fail(o, "a dielectric inside twosided is not read (it transmits)");
         m = thin_dielectric(*b, warnings);
     } else if (t == "plastic" || t == "roughplastic") {
-        m = plastic(*b, t == "roughplastic", warnings);
+        m = plastic(*b, t == "roughplastic", scene);
     } else if (t == "twosided") {
         fail(*b, "twosided inside twosided");
     } else {
@@ -208,6 +235,14 @@ Material mitsuba_material(const XmlObject& o, std::vector<std::string>& warnings
         else
             m.flags &= ~MAT_FLAG_TWO_SIDED;
     }
+    // A texture under any other name is refused by color_of.
+    const bool diffuse = t == "diffuse", coated = t == "plastic" || t == "roughplastic",
+               metal = t == "conductor" || t == "roughconductor";
+    for (const XmlObject* c : b->children)
+        if (c->tag == "texture" && !(diffuse && c->name == "reflectance") &&
+            !(coated && c->name == "diffuse_reflectance") &&
+            !((coated || metal) && c->name == "specular_reflectance"))
+            color_of(*b, c->name, {});
     xml_warn_unread(*b, warnings);
     return m;
 }

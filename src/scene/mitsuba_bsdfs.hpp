@@ -1,19 +1,22 @@
 // BSDFs of Mitsuba scene files as smallmlt's materials (doc/scene-format.md,
 // "Mitsuba scenes"): diffuse, twosided, conductor, roughconductor,
-// dielectric, roughdielectric, plastic and roughplastic, with Mitsuba 3's
-// parameter names and defaults; one-sided unless wrapped in twosided.
+// dielectric, roughdielectric, thindielectric, plastic and roughplastic,
+// with Mitsuba 3's parameter names and defaults, reflectances given as
+// textures (src/scene/mitsuba_textures.cpp); one-sided unless wrapped in
+// twosided.
 #pragma once
 #include "scene/mitsuba_xml.hpp"
-#include "shared_types.h"
+#include "scene/scene.hpp"
 
 #include <string>
 #include <vector>
 
 namespace smallmlt {
 
-// The material of `bsdf`; what it reads but cannot render goes to `warnings`.
-// Throws InputError at the BSDF's (or the parameter's) line.
-Material mitsuba_material(const XmlObject& bsdf, std::vector<std::string>& warnings);
+// The material of `bsdf`; its textures are appended to scene.textures, and
+// what it reads but cannot render goes to scene.warnings. Throws InputError
+// at the BSDF's (or the parameter's) line.
+Material mitsuba_material(const XmlObject& bsdf, Scene& scene);
 
 // A shape's material without a BSDF: Mitsuba's diffuse of reflectance 0.5,
 // or 0 on an emitter.

@@ -187,8 +187,8 @@ void read_shapes(const XmlObject& root, Scene& scene) {
         if (it != made.end()) {
             index = it->second;
         } else {
-            Material m = bsdf ? mitsuba_material(*bsdf, scene.warnings)
-                              : mitsuba_default_material(!emitters.empty());
+            Material m =
+                bsdf ? mitsuba_material(*bsdf, scene) : mitsuba_default_material(!emitters.empty());
             set_emission(m, {radiance[0], radiance[1], radiance[2]});
             index = std::uint32_t(scene.materials.size());
             scene.materials.push_back(m);

@@ -19,6 +19,7 @@ struct SceneTexture {
     int width = 0, height = 0;
     std::vector<std::uint32_t> texels; // RGBA, R in the low byte, top row first
     int halvings = 0;                  // times halved to fit (or by --texture-max)
+    bool nearest = false;              // looked up at the nearest texel, not bilinearly
 
     std::uint64_t bytes() const { return texels.size() * 4ull; }
 };
