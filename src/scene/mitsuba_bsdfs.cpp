@@ -136,10 +136,16 @@ Material conductor(const XmlObject& o, bool rough, Scene& scene) {
     return m;
 }
 
-Material dielectric(const XmlObject& o, bool rough, std::vector<std::string>& warnings) {
-    double eta = ior_of(o, "int_ior", 1.5046) / ior_of(o, "ext_ior", 1.000277);
+// A dielectric's relative index int_ior / ext_ior (bk7 in air by default);
+// its specular factors, which smallmlt's dielectrics lack, are read as 1.
+double dielectric_eta(const XmlObject& o, std::vector<std::string>& warnings) {
     unit_factor(o, "specular_reflectance", warnings);
     unit_factor(o, "specular_transmittance", warnings);
+    return ior_of(o, "int_ior", 1.5046) / ior_of(o, "ext_ior", 1.000277);
+}
+
+Material dielectric(const XmlObject& o, bool rough, std::vector<std::string>& warnings) {
+    double eta = dielectric_eta(o, warnings);
     if (!rough) return dielectric_material(float(eta), 0.0f);
     if (eta == 1) fail(o, "int_ior and ext_ior must differ");
     Microfacet d = distribution_of(o);
@@ -147,10 +153,7 @@ Material dielectric(const XmlObject& o, bool rough, std::vector<std::string>& wa
 }
 
 Material thin_dielectric(const XmlObject& o, std::vector<std::string>& warnings) {
-    double eta = ior_of(o, "int_ior", 1.5046) / ior_of(o, "ext_ior", 1.000277);
-    unit_factor(o, "specular_reflectance", warnings);
-    unit_factor(o, "specular_transmittance", warnings);
-    return thin_dielectric_material(float(eta));
+    return thin_dielectric_material(float(dielectric_eta(o, warnings)));
 }
 
 Material plastic(const XmlObject& o, bool rough, Scene& scene) {
