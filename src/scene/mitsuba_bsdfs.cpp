@@ -167,11 +167,14 @@ Material plastic(const XmlObject& o, bool rough, Scene& scene) {
     if (xml_bool(o, "nonlinear", false))
         warnings.push_back(nl->where.str() + ": warning: 'nonlinear' of " + o.tag + " '" + o.type +
                            "' is read as false (the linear sum of inner reflections)");
-    Material m = plastic_material(kd, ks, float(eta), 0.0f);
+    if (rough && (o.find("alpha_u") || o.find("alpha_v")))
+        fail(o, "anisotropic roughness is not read");
+    Material m;
     if (rough) {
-        if (o.find("alpha_u") || o.find("alpha_v")) fail(o, "anisotropic roughness is not read");
         Microfacet d = distribution_of(o);
         m = plastic_material(kd, ks, float(eta), alpha_of(o), d);
+    } else {
+        m = plastic_material(kd, ks, float(eta), 0.0f);
     }
     m.kd_tex = kd_tex;
     m.ks_tex = ks_tex;
