@@ -10,6 +10,14 @@ Per scene:
    SIZE x SIZE, MSE and 8x8-block MSE on linear RGB against a smallmlt PT
    reference of REF_SECONDS. Mitsuba's time is its render call after a
    warm-up render has compiled its kernels; smallmlt's is its --time.
+
+Rough plastic: Mitsuba 3's roughplastic takes the coat's inner reflectance
+R as twice the plain mean of r(cos) cos over 64 equally spaced cosines;
+smallmlt takes the integral (doc/RESULTS.md, "Mitsuba 3 as a peer"). Both
+divide the diffuse base by 1 - R, so, unless PEER_RINT=mitsuba, Mitsuba's
+copy of the scene has each roughplastic's diffuse_reflectance scaled by
+(1 - R_mitsuba) / (1 - R_integral): R_mitsuba read from Mitsuba's own BSDF,
+R_integral computed here from its definition. Both are printed.
 """
 import math
 import os
@@ -18,6 +26,7 @@ import subprocess
 import sys
 import tempfile
 import time
+import xml.etree.ElementTree as ET
 
 import drjit as dr
 import mitsuba as mi
@@ -32,6 +41,7 @@ REPLICAS = int(os.environ.get("REPLICAS", "8"))
 AGREE_SIZE = int(os.environ.get("AGREE_SIZE", "64"))
 AGREE_SPP = int(os.environ.get("AGREE_SPP", "256"))
 REF_SECONDS = int(os.environ.get("REF_SECONDS", "300"))
+PEER_RINT = os.environ.get("PEER_RINT", "integral")
 OUT = os.path.join("bench", "results", "mitsuba")
 CACHE = os.path.join("bench", "cache")
 ALPHA = 0.01
@@ -77,15 +87,142 @@ def student_quantile(p_two_sided, df):
     return (lo + hi) / 2
 
 
-def with_film(xml_path, size, out_path):
+def fresnel(cos_i, eta):
+    """Unpolarized Fresnel reflectance of a dielectric, index ratio eta."""
+    sin2_t = (1 - cos_i * cos_i) / (eta * eta)
+    cos_t = np.sqrt(np.maximum(0.0, 1 - sin2_t))
+    with np.errstate(invalid="ignore", divide="ignore"):  # 0 / 0 at grazing, masked out
+        r_s = (cos_i - eta * cos_t) / (cos_i + eta * cos_t)
+        r_p = (eta * cos_i - cos_t) / (eta * cos_i + cos_t)
+    return np.where(sin2_t >= 1, 1.0, np.nan_to_num(0.5 * (r_s * r_s + r_p * r_p), nan=1.0))
+
+
+def smith_g1(wz, wm, alpha, beckmann):
+    """Smith's G1 for a direction of cosine wz whose dot with the facet is wm."""
+    tan2 = np.maximum(0.0, 1 - wz * wz) / np.maximum(wz * wz, 1e-300)
+    if beckmann:
+        a = 1 / np.maximum(alpha * np.sqrt(tan2), 1e-300)
+        lam = np.where(a > 30, 0.0, 0.5 * (np.vectorize(math.erf)(a) - 1) + np.exp(-a * a) / (2 * a * math.sqrt(math.pi)))
+    else:
+        x = alpha * alpha * tan2
+        lam = x / (2 * (np.sqrt(1 + x) + 1))
+    return np.where(wm * wz > 0, 1 / (1 + lam), 0.0)
+
+
+def inner_reflectance(ior, alpha, beckmann):
+    """R = 2 * integral over cos of r(cos) cos, r(cos) the visible normals'
+    mean of F(w.m, 1/ior) G1(reflected) from inside the coat: Gauss-Legendre
+    on panels either side of the critical cosine, the visible normals on a
+    midpoint grid of the distribution's inverted CDF."""
+    nv, nphi = 512, 128
+    v = (np.arange(nv) + 0.5) / nv
+    u = 1 - (1 - v) ** 2
+    tan2 = -alpha * alpha * np.log1p(-u) if beckmann else alpha * alpha * u / (1 - u)
+    cz = 1 / np.sqrt(1 + tan2)
+    sz = np.sqrt(tan2) * cz
+    phi = (np.arange(nphi) + 0.5) * math.pi / nphi
+    mx, my, mz = np.outer(sz, np.cos(phi)), np.outer(sz, np.sin(phi)), np.outer(cz, np.ones(nphi))
+    jac = np.outer(2 * (1 - v) / cz, np.ones(nphi))
+
+    def r(c):
+        s = math.sqrt(max(0.0, 1 - c * c))
+        wm = s * mx + c * mz
+        rz = 2 * wm * mz - c
+        g = np.where((wm > 0) & (rz > 0), fresnel(np.maximum(wm, 0), 1 / ior) * smith_g1(rz, wm, alpha, beckmann), 0)
+        mean = (g * np.maximum(wm, 0) * jac).sum() / (nv * nphi)
+        return float(smith_g1(np.array(c), np.array(c), alpha, beckmann)) / c * mean
+
+    x, w = np.polynomial.legendre.leggauss(8)
+    cos_c = math.sqrt(1 - 1 / (ior * ior))
+    total = 0.0
+    for lo, hi in ((0.0, cos_c), (cos_c, 1.0)):
+        for p in range(8):
+            a, b = lo + (hi - lo) * p / 8, lo + (hi - lo) * (p + 1) / 8
+            for xi, wi in zip(x, w):
+                c = a + (b - a) * (xi + 1) / 2
+                total += wi * (b - a) / 2 * r(c) * c
+    return 2 * total
+
+
+def mitsuba_inner_reflectance(props):
+    """Mitsuba's own R, read from its roughplastic: the linear base is
+    d / (1 - R), the nonlinear one d / (1 - d R), so with d = 1 and d = 1/2
+    their ratio q = (2 - R) / (1 - R)."""
+    def base(nonlinear, d):
+        bsdf = mi.load_dict(dict(props, type="roughplastic", nonlinear=nonlinear,
+                                 diffuse_reflectance={"type": "rgb", "value": [d, d, d]},
+                                 specular_reflectance={"type": "rgb", "value": [0.0, 0.0, 0.0]}))
+        si = dr.zeros(mi.SurfaceInteraction3f)
+        si.wi = mi.Vector3f(0, 0, 1)
+        return float(bsdf.eval(mi.BSDFContext(), si, mi.Vector3f(0, 0, 1))[0][0])
+    q = base(False, 1.0) / base(True, 0.5)
+    return (q - 2) / (q - 1)
+
+
+def peer_scene(xml_path, size, out_path, for_mitsuba, written):
     """A copy of the scene file with a size x size film, beside it (so that
-    its relative paths hold)."""
+    its relative paths hold); Mitsuba's copy with rough plastic's inner
+    reflectance made the integral's (module doc). The files it writes are
+    added to `written`."""
     text = open(xml_path).read()
     text = re.sub(r'(<integer name="width" value=")\d+', r"\g<1>%d" % size, text)
     text = re.sub(r'(<integer name="height" value=")\d+', r"\g<1>%d" % size, text)
+    if for_mitsuba and PEER_RINT != "mitsuba" and "roughplastic" in text:
+        root = ET.fromstring(text)
+        if not root.get("version", "3").startswith("3"):
+            sys.exit("%s: roughplastic in the 0.5/0.6 syntax is not corrected here (PEER_RINT=mitsuba "
+                     "leaves it)" % xml_path)
+        for bsdf in root.iter("bsdf"):
+            if bsdf.get("type") == "roughplastic":
+                correct_inner_reflectance(xml_path, bsdf, written)
+        text = ET.tostring(root, encoding="unicode")
     with open(out_path, "w") as f:
         f.write(text)
+    written.append(out_path)
     return out_path
+
+
+_rint_cache = {}
+
+
+def correct_inner_reflectance(xml_path, bsdf, written):
+    values = {c.get("name"): c for c in bsdf}
+    diffuse = values.get("diffuse_reflectance")
+    texture = diffuse is not None and diffuse.tag == "texture"
+    if diffuse is not None and diffuse.tag not in ("rgb", "spectrum", "float") and not (
+            texture and diffuse.get("type") == "bitmap"
+            and not any(c.get("name") == "raw" and c.get("value") == "true" for c in diffuse)):
+        print("%s: a roughplastic's diffuse_reflectance other than a value or an sRGB bitmap is left "
+              "as it is: Mitsuba's inner reflectance stays" % xml_path)
+        return
+    props = {"distribution": values["distribution"].get("value") if "distribution" in values else "beckmann",
+             "alpha": float(values["alpha"].get("value")) if "alpha" in values else 0.1,
+             "int_ior": float(values["int_ior"].get("value")) if "int_ior" in values else 1.49,
+             "ext_ior": float(values["ext_ior"].get("value")) if "ext_ior" in values else 1.000277}
+    key = tuple(sorted(props.items()))
+    if key not in _rint_cache:
+        r_mi = mitsuba_inner_reflectance(props)
+        r_int = inner_reflectance(props["int_ior"] / props["ext_ior"], props["alpha"],
+                                  props["distribution"] == "beckmann")
+        _rint_cache[key] = (r_mi, r_int)
+        print("roughplastic %s: inner reflectance Mitsuba %.5f, integral %.5f: Mitsuba's diffuse_reflectance "
+              "scaled by %.5f" % (props, r_mi, r_int, (1 - r_mi) / (1 - r_int)), flush=True)
+    r_mi, r_int = _rint_cache[key]
+    k = (1 - r_mi) / (1 - r_int)
+    if texture:  # the image as linear floats times k (Mitsuba filters in linear)
+        name = next(c for c in diffuse if c.get("name") == "filename")
+        src = os.path.join(os.path.dirname(xml_path), name.get("value"))
+        bmp = mi.Bitmap(src).convert(mi.Bitmap.PixelFormat.RGB, mi.Struct.Type.Float32, srgb_gamma=False)
+        out = os.path.join(os.path.dirname(xml_path), ".peer-%d.exr" % len(written))
+        mi.Bitmap(np.array(bmp) * np.float32(k)).write(out)
+        written.append(out)
+        name.set("value", os.path.basename(out))
+        return
+    d = [float(x) for x in (diffuse.get("value") if diffuse is not None else "0.5").replace(",", " ").split()]
+    d = [x * k for x in (d * 3 if len(d) == 1 else d)]
+    if diffuse is None:
+        diffuse = ET.SubElement(bsdf, "rgb", name="diffuse_reflectance")
+    diffuse.set("value", " ".join("%.9g" % x for x in d))
 
 
 def mitsuba_render(path, spp, seed):
@@ -151,10 +288,11 @@ def cbox(path, size):
     return path
 
 
-def agreement(binary, name, path, tmp):
+def agreement(binary, name, paths, tmp):
+    path, mits_path = paths
     mits, ours = [], []
     for r in range(1, REPLICAS + 1):
-        img, _ = mitsuba_render(path, AGREE_SPP, r)
+        img, _ = mitsuba_render(mits_path, AGREE_SPP, r)
         mits.append(luminance(img))
         ours.append(luminance(smallmlt_render(
             binary, path, ["--method", "pt", "--spp", str(AGREE_SPP), "--seed", str(r)],
@@ -180,17 +318,18 @@ def agreement(binary, name, path, tmp):
     }
 
 
-def equal_time(binary, name, path, tmp):
+def equal_time(binary, name, paths, tmp):
+    path, mits_path = paths
     ref_path = os.path.join(CACHE, "%s-xml-%dx%d-%ds.pfm" % (name, SIZE, SIZE, REF_SECONDS))
     if not os.path.exists(ref_path):
         print("rendering the reference %s (smallmlt PT, %d s)" % (ref_path, REF_SECONDS), flush=True)
         smallmlt_render(binary, path, ["--method", "pt", "--time", str(REF_SECONDS), "--seed", "987654321"], ref_path)
     ref = read_pfm(ref_path)
     rows = []
-    mitsuba_render(path, 4, 1000)  # compiles the kernels
-    _, t16 = mitsuba_render(path, 16, 1001)
+    mitsuba_render(mits_path, 4, 1000)  # compiles the kernels
+    _, t16 = mitsuba_render(mits_path, 16, 1001)
     spp = max(1, int(SECONDS / (t16 / 16)))
-    img, secs = mitsuba_render(path, spp, 1)
+    img, secs = mitsuba_render(mits_path, spp, 1)
     rows.append(("Mitsuba 3 path", secs, img))
     for label, args in (("smallmlt PT", ["--method", "pt"]), ("smallmlt MLT", ["--method", "mlt"])):
         out = os.path.join(tmp, "e.pfm")
@@ -213,13 +352,17 @@ def main():
     for arg in sys.argv[2:]:
         name = "cbox" if arg == "cbox" else os.path.splitext(os.path.basename(arg))[0]
         with tempfile.TemporaryDirectory() as tmp:
-            if arg == "cbox":
-                src = cbox(os.path.join(OUT, "cbox.xml"), SIZE)
-                small = cbox(os.path.join(OUT, "cbox-agree.xml"), AGREE_SIZE)
-            else:
-                src = with_film(arg, SIZE, os.path.join(os.path.dirname(arg), ".peer-%s.xml" % name))
-                small = with_film(arg, AGREE_SIZE, os.path.join(os.path.dirname(arg), ".peer-%s-agree.xml" % name))
+            copies = []  # files written beside the scene, removed after it
             try:
+                if arg == "cbox":
+                    src = (cbox(os.path.join(OUT, "cbox.xml"), SIZE),) * 2
+                    small = (cbox(os.path.join(OUT, "cbox-agree.xml"), AGREE_SIZE),) * 2
+                else:
+                    def copy(size, suffix, for_mitsuba):
+                        out = os.path.join(os.path.dirname(arg), ".peer-%s%s.xml" % (name, suffix))
+                        return peer_scene(arg, size, out, for_mitsuba, copies)
+                    src = (copy(SIZE, "", False), copy(SIZE, "-mitsuba", True))
+                    small = (copy(AGREE_SIZE, "-agree", False), copy(AGREE_SIZE, "-agree-mitsuba", True))
                 a = agreement(binary, name, small, tmp)
                 print("%s: image mean PT %.6g, Mitsuba %.6g (z %+.2f); %d regions of %dx%d, largest |t| %.2f "
                       "(limit %.2f at %.2g, Bonferroni): %s; worst region PT/Mitsuba - 1 = %+.2f%%"
@@ -231,9 +374,8 @@ def main():
                     print("  %-14s %6.2f s  MSE %.4g  8x8-block MSE %.4g" % (label, secs, mse, bmse), flush=True)
                 report.append((a, e))
             finally:
-                if arg != "cbox":
-                    for p in (src, small):
-                        os.remove(p)
+                for p in copies:
+                    os.remove(p)
     with open(os.path.join(OUT, "summary.md"), "w") as f:
         f.write("| scene | PT / Mitsuba mean | mean z | largest region |t| (limit) | agree | "
                 "MSE at %g s: Mitsuba / PT / MLT | 8x8 blocks |\n| --- | --- | --- | --- | --- | --- | --- |\n" % SECONDS)

@@ -525,16 +525,16 @@ TEST(MitsubaXml, EveryErrorNamesItsFileAndLine) {
 
 namespace {
 
-const char* const kProjectScenes[] = {"ajar",           "cornell",       "cornell-glass",
-                                      "cornell-glossy", "cornell-water", "cornell-water-smooth",
-                                      "furnace",        "tiny-caustic",  "veach-mis",
-                                      "water-spark"};
+const char* const kProjectScenes[] = {
+    "ajar",          "blender-export",       "cornell", "cornell-glass", "cornell-glossy",
+    "cornell-water", "cornell-water-smooth", "furnace", "tiny-caustic",  "veach-mis",
+    "water-spark"};
 
 } // namespace
 
 // Each scene's .xml (scenes/generate.py) is its .scene: the same film, camera,
-// depth and triangles in the same order, each of the same material, bit for
-// bit.
+// depth and triangles in the same order, each of the same material, and the
+// same textures, bit for bit.
 TEST(MitsubaScenes, EveryProjectSceneReadsTheSameFromItsXml) {
     for (const char* name : kProjectScenes) {
         SCOPED_TRACE(name);
@@ -556,6 +556,13 @@ TEST(MitsubaScenes, EveryProjectSceneReadsTheSameFromItsXml) {
             differ += !same;
         }
         EXPECT_EQ(differ, 0u) << "triangles that differ";
+        ASSERT_EQ(a.textures.size(), b.textures.size());
+        for (std::size_t i = 0; i < a.textures.size(); ++i) {
+            const SceneTexture &s = a.textures[i], &x = b.textures[i];
+            EXPECT_TRUE(s.kind == x.kind && s.width == x.width && s.height == x.height &&
+                        s.texels == x.texels && s.nearest == x.nearest)
+                << "texture " << i << " (" << s.file << ", " << x.file << ")";
+        }
         EXPECT_TRUE(b.warnings.empty()) << b.warnings.front();
     }
 }

@@ -424,8 +424,18 @@ TEST(MtlBlender, DefaultExportOfBlender41LoadsAsRoughPlastic) {
     ASSERT_EQ(s.material_names[0], "Material");
     const Material& m = s.materials[0];
     EXPECT_EQ(m.type, u32(MAT_ROUGH_PLASTIC));
-    expect_rgb(m.kd, kZero, "kd"); // no Kd where map_Kd is written
+    // No Kd where map_Kd is written: the constant is the image's mean, in
+    // linear light, and the coat's choice weight follows it.
+    ASSERT_EQ(s.textures.size(), 1u);
+    double mean[3] = {0, 0, 0};
+    for (u32 t : s.textures[0].texels)
+        for (int c = 0; c < 3; ++c)
+            mean[c] += srgb_to_linear(((t >> (8 * c)) & 0xFFu) / 255.0) / 12;
+    expect_rgb(m.kd, {float(mean[0]), float(mean[1]), float(mean[2])}, "kd");
+    EXPECT_GT(mean[0] + mean[1] + mean[2], 0.1);
     expect_rgb(m.ks, kHalf, "ks");
+    double lum_d = 0.2126 * mean[0] + 0.7152 * mean[1] + 0.0722 * mean[2];
+    EXPECT_NEAR(m.spec_weight, 0.5 / (0.5 + lum_d), 1e-5);
     EXPECT_NEAR(m.ior, 1.45f, 1e-6);
     EXPECT_NEAR(m.alpha, 0.25f, 1e-6); // roughness 0.5, Blender's default
     ASSERT_EQ(s.textures.size(), 1u);

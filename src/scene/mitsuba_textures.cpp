@@ -23,25 +23,6 @@ void require_plain_uv(const XmlObject& o) {
                           "'to_uv' other than the identity is not read (the mesh's uv is used)");
 }
 
-Vec3 texel_colour(const SceneTexture& t, std::uint32_t v) {
-    double c[3];
-    for (int k = 0; k < 3; ++k) {
-        double u = double((v >> (8 * k)) & 0xFFu) / 255.0;
-        c[k] = t.kind == TextureKind::Colour ? srgb_to_linear(u) : u;
-    }
-    return {float(c[0]), float(c[1]), float(c[2])};
-}
-
-Vec3 mean_colour(const SceneTexture& t) {
-    double s[3] = {0, 0, 0};
-    for (std::uint32_t v : t.texels) {
-        Vec3 c = texel_colour(t, v);
-        s[0] += c.x, s[1] += c.y, s[2] += c.z;
-    }
-    double n = double(std::max<std::size_t>(1, t.texels.size()));
-    return {float(s[0] / n), float(s[1] / n), float(s[2] / n)};
-}
-
 SceneTexture bitmap(const XmlObject& o, std::vector<std::string>& warnings) {
     std::string file = xml_string(o, "filename", "");
     if (file.empty()) fail(o, "needs a 'filename'");
@@ -101,7 +82,7 @@ u32 add_mitsuba_texture(const XmlObject& t, Scene& scene, Vec3* mean) {
     else
         fail(t, "is not read (bitmap and checkerboard are)");
     xml_warn_unread(t, scene.warnings);
-    *mean = mean_colour(tex);
+    *mean = texture_mean(tex);
     scene.textures.push_back(std::move(tex));
     return static_cast<u32>(scene.textures.size() - 1);
 }

@@ -173,6 +173,17 @@ class MtlReader {
         for (const MtlLine& l : m.ignored)
             warnings_.add(l.directive, l.line,
                           "'" + l.directive + "' changes nothing in these models", true);
+        // A colour map's constant becomes the image's mean, as for Mitsuba's
+        // textures: the model's choice weights (plastic's) follow the image,
+        // not the Kd an exporter writes beside it.
+        MtlMaterial means = cur_;
+        bool remap = false;
+        for (const MtlTexture& t : m.textures)
+            if (t.constant) {
+                means.*t.constant = texture_mean(scene_.textures[texture_index(t)]);
+                remap = true;
+            }
+        if (remap) m.material = map_mtl_material(means, path_).material;
         for (const MtlTexture& t : m.textures)
             m.material.*t.slot = texture_index(t);
         scene_.materials.push_back(m.material);

@@ -121,21 +121,22 @@ MtlMapping map_mtl_material(const MtlMaterial& m, const std::string& file) {
     // The maps the model reads; the others change nothing.
     bool base = kind == Kind::Diffuse || kind == Kind::Plastic;
     if (m.map_kd && (base || kind == Kind::Metal))
-        out.textures.push_back(
-            {base ? &Material::kd_tex : &Material::ks_tex, *m.map_kd, TextureKind::Colour});
+        out.textures.push_back({base ? &Material::kd_tex : &Material::ks_tex, *m.map_kd,
+                                TextureKind::Colour, &MtlMaterial::kd});
     else if (m.map_kd)
         out.ignored.push_back({"map_Kd", m.map_kd->line, true});
     if (m.map_ks && (kind == Kind::Plastic || kind == Kind::Mirror))
-        out.textures.push_back({&Material::ks_tex, *m.map_ks, TextureKind::Colour});
+        out.textures.push_back(
+            {&Material::ks_tex, *m.map_ks, TextureKind::Colour, &MtlMaterial::ks});
     else if (m.map_ks)
         out.ignored.push_back({"map_Ks", m.map_ks->line, true});
     if (m.map_pr && kind != Kind::Diffuse)
-        out.textures.push_back({&Material::rough_tex, *m.map_pr, TextureKind::Data});
+        out.textures.push_back({&Material::rough_tex, *m.map_pr, TextureKind::Data, nullptr});
     else if (m.map_pr)
         out.ignored.push_back({"map_Pr", m.map_pr->line, true});
     // Emitters and dielectrics are not cut out.
     if (m.map_d && kind != Kind::Dielectric && !out.material.emissive)
-        out.textures.push_back({&Material::alpha_tex, *m.map_d, TextureKind::Mask});
+        out.textures.push_back({&Material::alpha_tex, *m.map_d, TextureKind::Mask, nullptr});
     else if (m.map_d)
         out.ignored.push_back({"map_d", m.map_d->line, true});
     return out;

@@ -61,6 +61,7 @@ struct MtlTexture {
     u32 Material::*slot;
     MtlMap map;
     TextureKind kind;
+    Vec3 MtlMaterial::*constant; // the colour it replaces, or null
 };
 
 struct MtlMapping {

@@ -17,6 +17,29 @@ double linear_to_srgb(double c) {
     return c <= 0.0031308 ? 12.92 * c : 1.055 * std::pow(c, 1 / 2.4) - 0.055;
 }
 
+namespace {
+
+Vec3 texel_colour(const SceneTexture& t, std::uint32_t v) {
+    double c[3];
+    for (int k = 0; k < 3; ++k) {
+        double u = double((v >> (8 * k)) & 0xFFu) / 255.0;
+        c[k] = t.kind == TextureKind::Colour ? srgb_to_linear(u) : u;
+    }
+    return {float(c[0]), float(c[1]), float(c[2])};
+}
+
+} // namespace
+
+Vec3 texture_mean(const SceneTexture& t) {
+    double s[3] = {0, 0, 0};
+    for (std::uint32_t v : t.texels) {
+        Vec3 c = texel_colour(t, v);
+        s[0] += c.x, s[1] += c.y, s[2] += c.z;
+    }
+    double n = double(std::max<std::size_t>(1, t.texels.size()));
+    return {float(s[0] / n), float(s[1] / n), float(s[2] / n)};
+}
+
 SceneTexture load_texture(const std::string& path, TextureKind kind, const std::string& where) {
     int w = 0, h = 0, channels = 0;
     stbi_uc* px = stbi_load(path.c_str(), &w, &h, &channels, 4);

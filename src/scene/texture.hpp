@@ -2,6 +2,8 @@
 // texels (sRGB-encoded for colour maps), the form the device stores
 // (TextureInfo, cl/core/shared_types.h), and halved where memory asks.
 #pragma once
+#include "base/vec3.hpp"
+
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -27,6 +29,10 @@ struct SceneTexture {
 // Reads an image file (PNG, JPEG, BMP, TGA, ...). Throws InputError
 // "where: cannot read texture FILE: reason".
 SceneTexture load_texture(const std::string& path, TextureKind kind, const std::string& where);
+
+// The mean of the texels' RGB: linear light for colours, the values for
+// data and masks.
+Vec3 texture_mean(const SceneTexture& t);
 
 // Halves both sides (a 2x2 box filter, in linear light for colours; a side
 // of 1 stays 1).
