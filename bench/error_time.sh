@@ -9,7 +9,8 @@
 # time (medians over the seeds; bench/time_to_error.awk).
 # Writes bench/results/error_time/. Usage: bench/error_time.sh [BIN]
 # Settings (environment): SCENES, SIZE, SECONDS, SEEDS, LOG_EVERY, THREADS, METHODS
-# (those of flags() below: -eF is --omc-effort F, -pP --large-step P);
+# (those of flags() below: -eF is --omc-effort F, -pP --large-step P,
+# mlt-strataN --strata N);
 # PLOT_ONLY=1 redraws the charts and the table from the last run's CSVs.
 set -eu
 BIN=${1:-build/smallmlt}
@@ -36,6 +37,8 @@ flags() {
     mlt-2stage) echo "--method mlt --target two-stage --threads $THREADS" ;;
     mlt-kelemen) echo "--method mlt --weights kelemen --threads $THREADS" ;;
     mlt-kelemen-p*) echo "--method mlt --weights kelemen --large-step ${1#mlt-kelemen-p} --threads $THREADS" ;;
+    mlt-strata) echo "--method mlt --strata auto --threads $THREADS" ;;
+    mlt-strata*) echo "--method mlt --strata ${1#mlt-strata} --threads $THREADS" ;;
     mlt-k2) echo "--method mlt --proposals 2 --threads $THREADS" ;;
     mlt-k4) echo "--method mlt --proposals 4 --threads $THREADS" ;;
     *) echo "error_time.sh: unknown method $1" >&2; exit 2 ;;
@@ -71,7 +74,8 @@ for scene in $SCENES; do
         "mlt-2stage=MLT, split auto, two-stage target" \
         "mlt-kelemen=MLT, split auto, Kelemen weights" \
         "mlt-kelemen-p0.3=MLT, Kelemen weights, large step 0.3" \
-        "mlt-k2=split-transition K = 2" "mlt-k4=split-transition K = 4"
+        "mlt-k2=split-transition K = 2" "mlt-k4=split-transition K = 4" \
+        "mlt-strata=MLT, split auto, strata auto" "mlt-strata8=MLT, split auto, strata of 8"
     awk -F, -v scene="$scene" -f bench/median.awk -f bench/time_to_error.awk "$csv" >> "$OUT/time_to_error.csv"
 done
 echo

@@ -140,12 +140,7 @@ TEST(BurnIn, ChainsStartOnThePathsTheirPicksFound) {
     EXPECT_EQ(dark, 0) << "chains started on unlit paths";
     std::vector<cl_uint2> picks(opt.threads);
     MltInspect::picks(mlt).read(test::cl(), picks.data());
-    ClBuffer out(test::cl(), CL_MEM_WRITE_ONLY, opt.threads * sizeof(cl_uint));
-    ClKernel k(MltInspect::program(mlt), "probe_chain_pixel");
-    k.set_args(ds.frame, MltInspect::state(mlt), cl_uint(opt.threads), out);
-    k.run(test::cl(), opt.threads);
-    std::vector<cl_uint> pixel(opt.threads);
-    out.read(test::cl(), pixel.data());
+    std::vector<cl_uint> pixel = test::chain_pixels(mlt, ds.frame);
     std::set<cl_uint> rounds;
     for (std::uint32_t c = 0; c < opt.threads; ++c) {
         std::uint64_t g = std::uint64_t(picks[c].s[0]) * opt.threads + picks[c].s[1];

@@ -138,12 +138,7 @@ TEST_P(MltSampler, ChainStatesFollowAKnownTarget) {
     mlt.prepare();
     mlt.step(300);
     const std::uint32_t chains = mlt.chains();
-    ClBuffer out(test::cl(), CL_MEM_WRITE_ONLY, chains * sizeof(cl_uint));
-    ClKernel k(MltInspect::program(mlt), "probe_chain_pixel");
-    k.set_args(ds.frame, MltInspect::state(mlt), cl_uint(chains), out);
-    k.run(test::cl(), chains);
-    std::vector<cl_uint> pixel(chains);
-    out.read(test::cl(), pixel.data());
+    std::vector<cl_uint> pixel = test::chain_pixels(mlt, ds.frame);
     std::vector<double> count(bins * bins, 0.0);
     for (cl_uint p : pixel)
         count[p] += 1;
@@ -167,6 +162,87 @@ TEST_P(MltSampler, ChainStatesFollowAKnownTarget) {
 
 INSTANTIATE_TEST_SUITE_P(Proposals, MltSampler, ::testing::Values(1u, 2u, 4u, 8u, 16u));
 
+// Stratified MLT (src/render/strata.hpp) on the known target, 16 tiles of
+// 4 x 4 bins and 4,096 chains (64 work-groups, 48 of them dealt by
+// brightness), after 200 steps:
+// - every chain's state splats to a pixel of its own tile;
+// - each tile's chains follow the target restricted to the tile: their
+//   histogram over its bins, against the closed-form bin integrals, by one
+//   chi-square over all lit tiles at significance 0.001 (the dark tile,
+//   x, y < 1/4, has no target to follow);
+// - each tile's B (the burn-in's samples in it and its large steps) is the
+//   tile's mean of g: z against the standard error from g's variance over
+//   the tile (numeric, 256 x 256 midpoints), |z| < 3.40 (two-sided 0.01
+//   over the 15 lit tiles, Bonferroni; the burn-in's samples are
+//   stratified by pixel, so the error is smaller than this).
+TEST(MltStrata, ChainsStayInTheirTilesFollowTheTargetAndEachTileHasItsB) {
+    const int bins = 16, side = 4, per_row = bins / side;
+    DeviceScene ds = test::layout_only_scene({}, bins, bins);
+    MltOptions opt = test::plain_mlt();
+    MltTestHooks hooks;
+    opt.threads = 4096;
+    opt.large_step = 0.3f;
+    opt.seed = 77;
+    opt.strata = side;
+    hooks.evaluator = "test/cl/eval_target.cl";
+    hooks.extra_files = {kProbeFile};
+    MltRenderer mlt(test::cl(), ds, opt, hooks);
+    mlt.prepare();
+    mlt.step(200);
+    ASSERT_EQ(mlt.strata_grid().count(), 16u);
+    const std::vector<std::uint32_t>& group_tile = mlt.group_tiles();
+    const std::uint32_t group_chains = std::uint32_t(kDefaultWorkGroup) / opt.proposals;
+    std::vector<cl_uint> pixel = test::chain_pixels(mlt, ds.frame);
+    std::vector<double> count(bins * bins, 0.0), chains(16, 0.0);
+    for (std::uint32_t c = 0; c < mlt.chains(); ++c) {
+        const std::uint32_t tile = group_tile[c / group_chains];
+        ASSERT_EQ(mlt.strata_grid().pixel_tile[pixel[c]], tile)
+            << "chain " << c << " left its tile for pixel " << pixel[c];
+        count[pixel[c]] += 1;
+        chains[tile] += 1;
+    }
+    std::vector<double> b = mlt.tile_b();
+    const MltTally tally = mlt.mlt_tally();
+    double chi2 = 0;
+    int df = 0, lit = 0;
+    for (int t = 0; t < 16; ++t) {
+        const int tx = t % per_row, ty = t / per_row;
+        double integral = 0, moment2 = 0;
+        for (int by = ty * side; by < (ty + 1) * side; ++by)
+            for (int bx = tx * side; bx < (tx + 1) * side; ++bx)
+                integral += target_bin_integral(bx, by);
+        if (integral == 0) {
+            EXPECT_EQ(b[t], 0.0) << "tile " << t << " has no light";
+            continue;
+        }
+        ++lit;
+        for (int by = ty * side; by < (ty + 1) * side; ++by)
+            for (int bx = tx * side; bx < (tx + 1) * side; ++bx) {
+                const double p = target_bin_integral(bx, by) / integral;
+                const double n = count[by * bins + bx], e = p * chains[t];
+                ASSERT_GT(p, 0.0);
+                chi2 += (n - e) * (n - e) / e;
+                ++df;
+            }
+        --df; // the tile's chains are fixed in number
+        const double area = double(side * side) / (bins * bins);
+        const double want = integral / area; // the tile's mean of g
+        const int m = 256;
+        for (int j = 0; j < m; ++j)
+            for (int i = 0; i < m; ++i) {
+                const double x = (tx + (i + 0.5) / m) / per_row, y = (ty + (j + 0.5) / m) / per_row;
+                const double sn = std::sin(2 * M_PI * y);
+                const double g = (x < 0.25 && y < 0.25) ? 0 : (1 + 3 * x) * (1 + sn * sn);
+                moment2 += g * g / (m * m);
+            }
+        const double n = double(tally.burn_in_samples) * area + double(tally.large[t]);
+        const double z = (b[t] - want) / std::sqrt((moment2 - want * want) / n);
+        EXPECT_LT(std::abs(z), 3.40) << "tile " << t << ": B " << b[t] << ", closed form " << want;
+    }
+    EXPECT_EQ(lit, 15);
+    EXPECT_LT(chi2, test::chi2_critical_001(df)) << "df " << df;
+}
+
 // The splatted image of the known target matches its bin means. Each of R
 // independent renders (own seed, own b) gives every bin a value; with the
 // replicas' mean m_b and standard error s_b, z_b = (m_b - truth_b) / s_b is
@@ -174,7 +250,8 @@ INSTANTIATE_TEST_SUITE_P(Proposals, MltSampler, ::testing::Values(1u, 2u, 4u, 8u
 // B bins has mean B (R-1)/(R-3) and variance B Var(t^2). T must stay below
 // its mean plus 3.3 standard deviations (about 0.001 one-sided), and bins
 // where the target is zero get exactly nothing.
-void check_splat_image(Target target, bool kelemen = false, double b0_scale = 1) {
+void check_splat_image(Target target, bool kelemen = false, double b0_scale = 1,
+                       std::uint32_t strata = 0) {
     const int bins = 16, replicas = 16;
     DeviceScene ds = test::layout_only_scene({}, bins, bins);
     std::vector<double> sum(bins * bins, 0.0), sum2(bins * bins, 0.0);
@@ -189,6 +266,8 @@ void check_splat_image(Target target, bool kelemen = false, double b0_scale = 1)
         hooks.b0_scale = b0_scale;
         opt.target = target;
         opt.kelemen = kelemen;
+        opt.strata = strata;
+        if (strata) opt.threads = 2048; // 32 work-groups: 16 dealt by brightness
         MltRenderer mlt(test::cl(), ds, opt, hooks);
         mlt.prepare();
         mlt.step(400);
@@ -248,6 +327,17 @@ TEST(MltSplat, KelemenImageMatchesTheTarget) {
 // (1 + p b) / (1 + 3 p b), about 0.6 of its value here.
 TEST(MltSplat, KelemenImageMatchesTheTargetWithAWrongB0) {
     check_splat_image(Target::Luminance, true, 3);
+}
+
+// Stratified MLT (src/render/strata.hpp): 16 tiles of 4 x 4 bins, each
+// normalized by its own B, with the chains dealt by brightness; the image is
+// the same, with expected values and with Kelemen's weights (a B0 per tile).
+TEST(MltSplat, StratifiedImageMatchesTheTarget) {
+    check_splat_image(Target::Luminance, false, 1, 4);
+}
+
+TEST(MltSplat, StratifiedKelemenImageMatchesTheTarget) {
+    check_splat_image(Target::Luminance, true, 1, 4);
 }
 
 // MLT renders against PT, block by block, and b against PT's mean:

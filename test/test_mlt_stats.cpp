@@ -42,11 +42,11 @@ TEST(MltTally, RoundTripsAndRefusesAnotherShape) {
         t.film[i] = 100 + i;
         t.large_film[i] = 200 + i;
     }
-    t.mutations = 7;
-    t.burn_in_lum = 8;
+    t.mutations = {7};
+    t.burn_in_lum = {8};
     t.burn_in_samples = 9;
-    t.large_lum = 10;
-    t.large = 11;
+    t.large_lum = {10};
+    t.large = {11};
     t.burn_in_lum2 = 0.5;
     t.omc_spp = 12;
     for (std::size_t i = 0; i < t.omc_sums.size(); ++i) {
@@ -60,11 +60,11 @@ TEST(MltTally, RoundTripsAndRefusesAnotherShape) {
     back.read(flat);
     EXPECT_EQ(back.film, t.film);
     EXPECT_EQ(back.large_film, t.large_film);
-    EXPECT_EQ(back.mutations, 7u);
-    EXPECT_EQ(back.burn_in_lum, 8u);
+    EXPECT_EQ(back.mutations, std::vector<std::uint64_t>{7});
+    EXPECT_EQ(back.burn_in_lum, std::vector<std::uint64_t>{8});
     EXPECT_EQ(back.burn_in_samples, 9u);
-    EXPECT_EQ(back.large_lum, 10u);
-    EXPECT_EQ(back.large, 11u);
+    EXPECT_EQ(back.large_lum, std::vector<std::uint64_t>{10});
+    EXPECT_EQ(back.large, std::vector<std::uint64_t>{11});
     EXPECT_EQ(back.burn_in_lum2, 0.5);
     EXPECT_EQ(back.omc_spp, 12u);
     EXPECT_EQ(back.omc_sums, t.omc_sums);

@@ -304,7 +304,7 @@ TEST(MpiRender, KelemenRanksWeighWithOneB0) {
             mlt.prepare(me);
             pb.push_back(mlt.report().kelemen_pb);
             MltTally t = mlt.mlt_tally();
-            lum += t.burn_in_lum;
+            lum += t.burn_in_lum.at(0);
             samples += t.burn_in_samples;
         }
         if (ex.complete) break;

@@ -38,12 +38,14 @@ struct RenderCase {
     int pt_batches;       // batches, seed pt_seed
     std::uint64_t pt_seed;
     Split split = Split::None; // with a split, the image is both parts
+    std::uint32_t strata = 0;  // stratified MLT's tile side (0: none)
 };
 
 // What gtest prints for a failing case.
 void PrintTo(const RenderCase& c, std::ostream* os) {
-    *os << c.scene << " K=" << c.proposals << " split " << split_name(c.split) << ", " << c.threads
-        << " threads x " << c.steps << " steps x " << c.replicas << " renders";
+    *os << c.scene << " K=" << c.proposals << " split " << split_name(c.split) << " strata "
+        << c.strata << ", " << c.threads << " threads x " << c.steps << " steps x " << c.replicas
+        << " renders";
 }
 
 // The fixed seeds; SMALLMLT_RENDER_SEED=N adds N * 10^6 to every seed, to
@@ -137,6 +139,7 @@ TEST_P(RenderBlocks, MltMatchesPathTracingPerBlock) {
         opt.large_step = 0.1f; // the default with burn-in (32 rounds) and expected values
         opt.seed = c.seed + seed_offset() + 1 + r;
         opt.split = c.split;
+        opt.strata = c.strata;
         opt.omc_effort = 0.05; // the rule's share would make the OMC part most of the time
         MltRenderer m(test::cl(), ds, opt);
         m.prepare();
@@ -224,6 +227,9 @@ TEST_P(RenderBlocks, MltMatchesPathTracingPerBlock) {
 // - veach-mis, K = 1, split visible: the lamps the camera sees to the OMC
 //   part, the chains render their reflections in the plates; the same
 //   settings; 3.4% / 6.1% / 11%; 6 s.
+// - cornell-water, K = 1, stratified in tiles of 8 x 8: the blocks are the
+//   16 tiles, so each tile's own B and its chains' light are compared with
+//   PT; 8 renders x 48 steps.
 // 4,096 threads at least: burn-in picks each round's chain starts in
 // proportion to that round's 4,096 OMC samples, and with fewer the starts
 // themselves give cornell's bright light too little (1.5-2% at 2,048), a
@@ -238,11 +244,13 @@ INSTANTIATE_TEST_SUITE_P(
         RenderCase{"cornell-water", 32, 16, 4096, 1, 48, 8, 5000, 1536, 32, 300, Split::Direct},
         RenderCase{"ajar", 32, 16, 4096, 1, 48, 8, 4000, 1536, 32, 400, Split::Direct},
         RenderCase{"cornell-glossy", 32, 16, 4096, 1, 128, 8, 6000, 1536, 32, 600},
-        RenderCase{"veach-mis", 32, 16, 4096, 1, 128, 8, 7000, 1536, 32, 700, Split::Visible}),
+        RenderCase{"veach-mis", 32, 16, 4096, 1, 128, 8, 7000, 1536, 32, 700, Split::Visible},
+        RenderCase{"cornell-water", 32, 8, 4096, 1, 48, 8, 8000, 1536, 32, 300, Split::None, 8}),
     [](const ::testing::TestParamInfo<RenderCase>& info) {
         std::string name = std::string(info.param.scene) + "_K" +
                            std::to_string(info.param.proposals) + "_" +
-                           split_name(info.param.split);
+                           split_name(info.param.split) +
+                           (info.param.strata ? "_strata" + std::to_string(info.param.strata) : "");
         std::replace(name.begin(), name.end(), '-', '_');
         return name;
     });

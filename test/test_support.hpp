@@ -27,6 +27,7 @@ struct MltInspect {
     static const ClBuffer& picks(const MltRenderer& m) { return m.picks_; } // (round, index)
     static std::vector<float> weights(const MltRenderer& m) { return m.target_.read(); }
     static cl_program program(const MltRenderer& m) { return m.program_.p; }
+    static const StrataBuffer& strata(const MltRenderer& m) { return m.strata_; }
     // The split's OMC part (null without a split).
     static const OmcPartTracer* omc_part(const MltRenderer& m) {
         return m.omc_ ? &m.omc_->part() : nullptr;
@@ -41,6 +42,19 @@ namespace smallmlt::test {
 inline const ClContext& cl() {
     static ClContext ctx(0);
     return ctx;
+}
+
+// The pixel of each chain's current state, in its tile (probe_chain_pixel
+// of test/cl/probe_mlt.cl, which the renderer's hooks must have added).
+inline std::vector<cl_uint> chain_pixels(const MltRenderer& mlt, const Frame& frame) {
+    const std::uint32_t chains = mlt.chains();
+    ClBuffer out(cl(), CL_MEM_WRITE_ONLY, chains * sizeof(cl_uint));
+    ClKernel k(MltInspect::program(mlt), "probe_chain_pixel");
+    k.set_args(frame, MltInspect::strata(mlt), MltInspect::state(mlt), cl_uint(chains), out);
+    k.run(cl(), chains);
+    std::vector<cl_uint> pixel(chains);
+    out.read(cl(), pixel.data());
+    return pixel;
 }
 
 // Skips the calling test, saying why, on a device without 64-bit atomics:

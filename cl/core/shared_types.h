@@ -257,6 +257,23 @@ typedef struct {
     u32 per_round;
 } BurnInFilm;
 
+/* A stratum of the film for MLT's chains (cl/sampling/strata.cl): the
+ * pixels [x0, x0 + w) x [y0, y0 + h). A chain of the stratum reads its film
+ * numbers (u, v) in [0, 1)^2 as the film position (ox + u sx, oy + v sy) and
+ * splats to pixel (x0 + floor(u w), y0 + floor(v h)); ox = x0 / width,
+ * sx = w / width (and so for y), rounded to float, so that the whole film
+ * is ox = oy = 0, sx = sy = 1 exactly. 32 bytes. */
+typedef struct {
+    u32 x0;
+    u32 y0;
+    u32 w;
+    u32 h;
+    f32 ox;
+    f32 oy;
+    f32 sx;
+    f32 sy;
+} FilmTile;
+
 /* The layout of every struct above, one list: S(struct, size in bytes)
  * and, for each field past the first, F(struct, field, offset in bytes).
  * The host static_asserts it (src/scene/shared_layout.cpp), and the host and
@@ -284,7 +301,9 @@ typedef struct {
         F(FilmShape, layers, 16)                                                                   \
     S(TargetCells, 8) F(TargetCells, columns, 4)                                                   \
     S(BurnInFilm, 20) F(BurnInFilm, seed_hi, 4) F(BurnInFilm, offset, 8)                          \
-        F(BurnInFilm, step, 12) F(BurnInFilm, per_round, 16)
+        F(BurnInFilm, step, 12) F(BurnInFilm, per_round, 16)                                       \
+    S(FilmTile, 32) F(FilmTile, y0, 4) F(FilmTile, w, 8) F(FilmTile, h, 12) F(FilmTile, ox, 16)   \
+        F(FilmTile, oy, 20) F(FilmTile, sx, 24) F(FilmTile, sy, 28)
 /* clang-format on */
 
 #define FILM_MAX_BANDS 4

@@ -26,7 +26,8 @@ __kernel void mlt_luminance(SCENE_ARGS, __global const float* weight, const Targ
         SceneView sc = SCENE_VIEW();
         MltTarget target = mlt_target(weight, cells, &frame, 0.0f);
         uint2 at = burnin_film(&film, &frame, (ulong)round * film.per_round + i);
-        SampleSource src = smp_chain_start(state, 0u, 1u, rng_key(seed, i, 0u), at);
+        SampleSource src =
+            smp_chain_start(state, 0u, 1u, rng_key(seed, i, 0u), at, strata_whole(&frame));
         EvalResult s = mlt_checked(eval_state(&sc, &frame, &src), &nonfinite);
         lum[i] = path_luminance(s.f) * mlt_weight(&target, s.pixel);
 #ifdef MLT_BURN_IN_SAMPLES
@@ -38,12 +39,13 @@ __kernel void mlt_luminance(SCENE_ARGS, __global const float* weight, const Targ
 }
 
 /* Starts chain c at burn-in sample picks[c] = (round r, index i): the path
- * of key rng_key(rng_round_seed(omc_seed, r), i, 0) at its film position, as mlt_luminance
- * drew it. */
+ * of key rng_key(rng_round_seed(omc_seed, r), i, 0) at its film position, as
+ * mlt_luminance drew it, read as numbers of the chain's tile (a fresh start
+ * outside the tile is moved to its edge). */
 __kernel void mlt_init(SCENE_ARGS, __global const float* weight, const TargetCells cells,
-                       const BurnInFilm film, __global uint* state, __global ChainValue* values,
-                       const uint num_chains, const ulong omc_seed, __global const uint2* picks,
-                       __global ulong* stats) {
+                       const BurnInFilm film, STRATA_ARGS, __global uint* state,
+                       __global ChainValue* values, const uint num_chains, const ulong omc_seed,
+                       __global const uint2* picks, __global ulong* stats) {
     __local uint l_count[MLT_COUNTS];
     uint c = get_global_id(0), nonfinite = 0u;
     mlt_zero_counts(l_count);
@@ -51,11 +53,12 @@ __kernel void mlt_init(SCENE_ARGS, __global const float* weight, const TargetCel
     if (c < num_chains) {
         SceneView sc = SCENE_VIEW();
         MltTarget target = mlt_target(weight, cells, &frame, 0.0f);
+        MltStratum stratum = MLT_STRATUM(c);
         uint2 pick = picks[c];
         ulong round_seed = rng_round_seed(omc_seed, pick.x);
         uint2 at = burnin_film(&film, &frame, (ulong)pick.x * film.per_round + pick.y);
-        SampleSource src =
-            smp_chain_start(state, c, num_chains, rng_key(round_seed, pick.y, 0u), at);
+        SampleSource src = smp_chain_start(state, c, num_chains, rng_key(round_seed, pick.y, 0u),
+                                           strata_local(&stratum.tile, &frame, at), stratum.tile);
         float w;
         EvalResult s = mlt_evaluate(&sc, &frame, &src, &target, &nonfinite, &w);
         smp_commit(&src, s.bounces);
@@ -79,9 +82,9 @@ __kernel void mlt_init(SCENE_ARGS, __global const float* weight, const TargetCel
  *    OMC sample of b's integrand), go to its row of stats; the picked
  *    work-item commits its proposal. */
 __kernel void mlt_step(SCENE_ARGS, __global const float* weight, const TargetCells cells,
-                       __global uint* state, __global ChainValue* values, const uint num_threads,
-                       const uint proposals, const ulong seed, const uint iteration,
-                       const uint large_threshold, const float kelemen_pb, FILM_ARGS,
+                       STRATA_ARGS, __global uint* state, __global ChainValue* values,
+                       const uint num_threads, const uint proposals, const ulong seed,
+                       const uint iteration, const uint large_threshold, FILM_ARGS,
                        __global ulong* stats, const uint stuck_run) {
     __local float l_a[MLT_GROUP];
     __local uint l_next[MLT_GROUP];
@@ -90,13 +93,14 @@ __kernel void mlt_step(SCENE_ARGS, __global const float* weight, const TargetCel
     MltThread th = mlt_thread(num_threads, proposals);
     uint c = th.active ? th.chain : 0u;
     SceneView sc = SCENE_VIEW();
-    MltTarget target = mlt_target(weight, cells, &frame, kelemen_pb);
+    MltStratum stratum = MLT_STRATUM(c);
+    MltTarget target = mlt_target(weight, cells, &frame, stratum.kelemen_pb);
     Film film = FILM_VIEW();
     ChainValue x = values[c];
     ulong key = rng_key(seed, th.t, iteration);
     bool large = mlt_is_large(key, large_threshold);
-    SampleSource src =
-        smp_chain(state, c, th.chains, key, large ? SMP_LARGE : SMP_SMALL, chain_bounces(x));
+    SampleSource src = smp_chain(state, c, th.chains, key, large ? SMP_LARGE : SMP_SMALL,
+                                 chain_bounces(x), stratum.tile);
     EvalResult y = eval_nothing();
     float a = 0.0f;
     uint atomics = 0u, nonfinite = 0u;
@@ -111,8 +115,8 @@ __kernel void mlt_step(SCENE_ARGS, __global const float* weight, const TargetCel
         float stay = mlt_stay_weight(&l_a[th.first], proposals);
         uint next = mlt_select(&l_a[th.first], proposals, stay, mlt_select_number(key, proposals));
         l_next[th.lid] = next;
-        uint pending = mlt_settle_stay(&frame, &target, state, c, th.chains, x, stay, next != 0u,
-                                       &film, key, &atomics);
+        uint pending = mlt_settle_stay(&frame, &target, &stratum.tile, state, c, th.chains, x, stay,
+                                       next != 0u, &film, key, &atomics);
         if (next == 0u)
             mlt_stay(&values[c], x, pending, stuck_run, l_count);
         else
@@ -136,16 +140,18 @@ __kernel void mlt_step(SCENE_ARGS, __global const float* weight, const TargetCel
 #define MLT_OWED_UNDO 1u
 #define MLT_OWED_FLUSH 2u
 __kernel void mlt_owed(const Frame frame, __global const float* weight, const TargetCells cells,
-                       const float kelemen_pb, __global const uint* state,
-                       __global ChainValue* values, const uint num_chains, const ulong seed,
-                       const uint iteration, FILM_ARGS, const uint mode) {
+                       STRATA_ARGS, __global const uint* state, __global ChainValue* values,
+                       const uint num_chains, const ulong seed, const uint iteration, FILM_ARGS,
+                       const uint mode) {
     uint c = get_global_id(0);
     if (c >= num_chains) return;
     Film film = FILM_VIEW();
-    MltTarget target = mlt_target(weight, cells, &frame, kelemen_pb);
+    MltStratum stratum = MLT_STRATUM(c);
+    MltTarget target = mlt_target(weight, cells, &frame, stratum.kelemen_pb);
     ChainValue x = values[c];
     if (!x.stay) return;
-    mlt_splat_state(&frame, &target, state, c, num_chains, x, chain_stay_weight(x.stay), &film,
-                    rng_key(seed, c, iteration), MLT_DIM_ROUND_OWED, mode == MLT_OWED_UNDO);
+    mlt_splat_state(&frame, &target, &stratum.tile, state, c, num_chains, x,
+                    chain_stay_weight(x.stay), &film, rng_key(seed, c, iteration),
+                    MLT_DIM_ROUND_OWED, mode == MLT_OWED_UNDO);
     if (mode == MLT_OWED_FLUSH) values[c].stay = 0u;
 }

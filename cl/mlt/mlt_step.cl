@@ -37,6 +37,29 @@ inline MltTarget mlt_target(__global const float* weight, TargetCells cells, con
     return t;
 }
 
+/* Stratified MLT (src/render/strata.hpp): the chains of work-group g (of
+ * MLT_GROUP threads, strata_group_chains chains) live in tile
+ * strata_group_tile[g] of strata_tiles, where Kelemen's weights take
+ * p b0 = strata_pb[tile], b0 the tile's own normalization. One tile, the
+ * whole film, is plain MLT. */
+#define STRATA_ARGS                                                                                \
+    __global const FilmTile *strata_tiles, __global const uint *strata_group_tile,                 \
+        __global const float *strata_pb, const uint strata_group_chains
+
+typedef struct {
+    FilmTile tile;
+    float kelemen_pb;
+} MltStratum;
+
+inline MltStratum mlt_stratum(__global const FilmTile* tiles, __global const uint* group_tile,
+                              __global const float* pb, uint group_chains, uint chain) {
+    uint t = group_tile[chain / group_chains];
+    MltStratum s = {tiles[t], pb[t]};
+    return s;
+}
+#define MLT_STRATUM(chain)                                                                         \
+    mlt_stratum(strata_tiles, strata_group_tile, strata_pb, strata_group_chains, (chain))
+
 /* What a splat at target value i keeps of its expected-value weight:
  * i / (i + p b0) with Kelemen's weights, else 1. */
 inline float mlt_kelemen(const MltTarget* t, float i) {
@@ -158,20 +181,21 @@ inline float mlt_stay_weight(__local const float* a, uint proposals) {
     return fmax(stay, 0.0f);
 }
 
-/* The pixel the chain's current state x splats to. */
-inline uint mlt_state_pixel(const Frame* frame, __global const uint* state, uint chain,
-                            uint chains) {
-    return eval_pixel(frame, pss_load(state, chain, chains, layout_film(0u)),
-                      pss_load(state, chain, chains, layout_film(1u)));
+/* The pixel the chain's current state x splats to, in its tile. */
+inline uint mlt_state_pixel(const Frame* frame, const FilmTile* tile, __global const uint* state,
+                            uint chain, uint chains) {
+    return strata_point(tile, frame, pss_load(state, chain, chains, layout_film(0u)),
+                        pss_load(state, chain, chains, layout_film(1u)))
+        .pixel;
 }
 
 /* Splats w * F(x)/I(x) (Kelemen's weights: w * F(x)/(I(x) + p b0)) at the
- * pixel of chain's state x (subtracts it with `undo`); returns the global
- * atomics it made. */
-inline uint mlt_splat_state(const Frame* frame, const MltTarget* target, __global const uint* state,
-                            uint chain, uint chains, ChainValue x, float w, const Film* film,
-                            ulong key, uint dim, bool undo) {
-    uint pixel = mlt_state_pixel(frame, state, chain, chains);
+ * pixel of chain's state x in tile `tile` (subtracts it with `undo`);
+ * returns the global atomics it made. */
+inline uint mlt_splat_state(const Frame* frame, const MltTarget* target, const FilmTile* tile,
+                            __global const uint* state, uint chain, uint chains, ChainValue x,
+                            float w, const Film* film, ulong key, uint dim, bool undo) {
+    uint pixel = mlt_state_pixel(frame, tile, state, chain, chains);
     float3 g = chain_g(x);
     w *= mlt_kelemen(target, path_luminance(g)) / mlt_weight(target, pixel);
     return film_splat(film, pixel, FILM_LAYER_CHAINS, g, w, key, dim, undo);
@@ -198,15 +222,15 @@ inline uint mlt_select(__local const float* a, uint proposals, float stay, float
  * splatted at x's pixel when the chain moves away or the weight reaches
  * MLT_STAY_FLUSH (with MLT_EAGER_STAY: at once). Returns the weight still
  * pending, in the fixed point of ChainValue.stay. */
-inline uint mlt_settle_stay(const Frame* frame, const MltTarget* target, __global const uint* state,
-                            uint chain, uint chains, ChainValue x, float stay, bool moves,
-                            const Film* film, ulong key, uint* atomics) {
+inline uint mlt_settle_stay(const Frame* frame, const MltTarget* target, const FilmTile* tile,
+                            __global const uint* state, uint chain, uint chains, ChainValue x,
+                            float stay, bool moves, const Film* film, ulong key, uint* atomics) {
     uint pending = x.stay + chain_stay_fixed(stay);
 #ifndef MLT_EAGER_STAY
     if (!moves && pending < MLT_STAY_FLUSH) return pending;
 #endif
-    *atomics += mlt_splat_state(frame, target, state, chain, chains, x, chain_stay_weight(pending),
-                                film, key, MLT_DIM_ROUND_X, false);
+    *atomics += mlt_splat_state(frame, target, tile, state, chain, chains, x,
+                                chain_stay_weight(pending), film, key, MLT_DIM_ROUND_X, false);
     return 0u;
 }
 

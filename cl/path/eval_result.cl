@@ -1,5 +1,5 @@
-/* What evaluating a chain's state yields, and which pixel a film position
- * splats to: shared by every evaluator (eval_path.cl, eval_target.cl). */
+/* What evaluating a chain's state yields: shared by every evaluator
+ * (eval_path.cl, eval_target.cl). */
 
 typedef struct {
     float3 f;     /* F: RGB contribution (the MLT part) */
@@ -8,12 +8,6 @@ typedef struct {
     uint bounces; /* live bounces of the state (PathResult.bounces) */
     uint rays;
 } EvalResult;
-
-inline uint eval_pixel(const Frame* frame, float fx, float fy) {
-    uint px = min((uint)(fx * (float)frame->width), frame->width - 1u);
-    uint py = min((uint)(fy * (float)frame->height), frame->height - 1u);
-    return py * frame->width + px;
-}
 
 /* What an idle work-item holds: no contribution, no rays. */
 inline EvalResult eval_nothing(void) {

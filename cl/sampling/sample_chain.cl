@@ -22,12 +22,13 @@ typedef struct {
     uint stride; /* number of chains */
     ulong key;
     uint mode;
-    uint alive; /* live bounces of x */
-    uint2 film; /* SMP_START: the film numbers (LAYOUT_CAMERA_BITS wide) */
+    uint alive;    /* live bounces of x */
+    uint2 film;    /* SMP_START: the film numbers (LAYOUT_CAMERA_BITS wide) */
+    FilmTile tile; /* the chain's stratum (strata.cl): its film numbers are the tile's */
 } SampleSource;
 
 inline SampleSource smp_chain(__global uint* state, uint chain, uint stride, ulong key, uint mode,
-                              uint alive) {
+                              uint alive, FilmTile tile) {
     SampleSource s;
     s.state = state;
     s.chain = chain;
@@ -36,14 +37,15 @@ inline SampleSource smp_chain(__global uint* state, uint chain, uint stride, ulo
     s.mode = mode;
     s.alive = alive;
     s.film = (uint2)(0u);
+    s.tile = tile;
     return s;
 }
 
-/* A burn-in sample: the path of `key` at the film numbers `film`
- * (burnin_film.cl). */
+/* A burn-in sample: the path of `key` at the film numbers `film` of tile
+ * `tile` (burnin_film.cl; strata_local for a chain's own tile). */
 inline SampleSource smp_chain_start(__global uint* state, uint chain, uint stride, ulong key,
-                                    uint2 film) {
-    SampleSource s = smp_chain(state, chain, stride, key, SMP_START, 0u);
+                                    uint2 film, FilmTile tile) {
+    SampleSource s = smp_chain(state, chain, stride, key, SMP_START, 0u, tile);
     s.film = film;
     return s;
 }
@@ -71,12 +73,19 @@ inline uint smp_small_delta(uint r, uint bits) {
     return max((uint)((p + (1ul << (shift - 1u))) >> shift), 1u);
 }
 
+/* How many times longer a film number's small step is in a tile than on
+ * the whole film: the film over the tile, rounded (1 on the whole film), so
+ * that a step moves about as many pixels in a tile as on the film. */
+inline uint smp_film_stretch(const SampleSource* s, uint dim) {
+    return (uint)(1.0f / (dim ? s->tile.sy : s->tile.sx) + 0.5f);
+}
+
 #ifndef PSS_FLOAT32
 
-/* Integer value v of a `bits`-wide number moved by the small step of stream
- * number r, wrapping around the slot's grid. */
-inline uint smp_perturb_bits(uint v, uint r, uint bits) {
-    uint delta = smp_small_delta(r, bits);
+/* Integer value v of a `bits`-wide number moved by `stretch` times the small
+ * step of stream number r, wrapping around the slot's grid. */
+inline uint smp_perturb_bits(uint v, uint r, uint bits, uint stretch) {
+    uint delta = smp_small_delta(r, bits) * stretch;
     return ((r >> 31) ? v + delta : v - delta) & ((1u << bits) - 1u);
 }
 
@@ -89,7 +98,8 @@ inline uint smp_propose_bits(const SampleSource* s, uint bounce, LayoutSlot at) 
     bool live = at.dim < LAYOUT_CAMERA_DIMS || bounce < s->alive;
     if (s->mode >= SMP_LARGE || !live) return r >> (32u - at.bits);
     uint v = pss_read_bits(s->state, s->chain, s->stride, at.bit_offset, at.bits);
-    return s->mode == SMP_REPLAY ? v : smp_perturb_bits(v, r, at.bits);
+    uint stretch = at.dim < LAYOUT_CAMERA_DIMS ? smp_film_stretch(s, at.dim) : 1u;
+    return s->mode == SMP_REPLAY ? v : smp_perturb_bits(v, r, at.bits, stretch);
 }
 
 inline float smp_propose(const SampleSource* s, uint bounce, LayoutSlot at) {
@@ -103,13 +113,12 @@ inline void smp_commit_slot(const SampleSource* s, PssWriter* w, uint bounce, La
 
 #else
 
-/* The float32 reference: 24-bit numbers moved in float arithmetic by the
- * small step of a 24-bit slot, wrapping around [0, 1). */
-inline float smp_perturb(float x, uint r) {
-    float d = layout_unit(smp_small_delta(r, 24u), 24u);
+/* The float32 reference: 24-bit numbers moved in float arithmetic by
+ * `stretch` times the small step of a 24-bit slot, wrapping around [0, 1). */
+inline float smp_perturb(float x, uint r, uint stretch) {
+    float d = layout_unit(smp_small_delta(r, 24u) * stretch, 24u);
     float y = (r >> 31) ? x + d : x - d;
-    if (y < 0.0f) y += 1.0f;
-    if (y >= 1.0f) y -= 1.0f;
+    y -= floor(y);
     return y < 1.0f ? y : 0.0f;
 }
 
@@ -120,7 +129,8 @@ inline float smp_propose(const SampleSource* s, uint bounce, LayoutSlot at) {
     bool live = at.dim < LAYOUT_CAMERA_DIMS || bounce < s->alive;
     if (s->mode >= SMP_LARGE || !live) return (float)(r >> 8) * (1.0f / 16777216.0f);
     float x = pss_load(s->state, s->chain, s->stride, at);
-    return s->mode == SMP_REPLAY ? x : smp_perturb(x, r);
+    uint stretch = at.dim < LAYOUT_CAMERA_DIMS ? smp_film_stretch(s, at.dim) : 1u;
+    return s->mode == SMP_REPLAY ? x : smp_perturb(x, r, stretch);
 }
 
 inline void smp_commit_slot(const SampleSource* s, PssWriter* w, uint bounce, LayoutSlot at) {
@@ -131,6 +141,12 @@ inline void smp_commit_slot(const SampleSource* s, PssWriter* w, uint bounce, La
 
 inline float smp_uniform(SampleSource* s, uint bounce, LayoutSlot at) {
     return smp_propose(s, bounce, at);
+}
+
+/* Where the proposal lies on the film: its film numbers read in its tile. */
+inline FilmPoint smp_film_point(SampleSource* s, const Frame* frame) {
+    float u = smp_uniform(s, 0u, layout_film(0u)), v = smp_uniform(s, 0u, layout_film(1u));
+    return strata_point(&s->tile, frame, u, v);
 }
 
 /* Makes the proposal the chain's state: stores its numbers for the film and

@@ -6,6 +6,7 @@
 #include "device/device_profile.hpp"
 #include "image/image.hpp"
 #include "render/split.hpp"
+#include "render/strata.hpp"
 #include "render/target.hpp"
 #include "scene/scene.hpp"
 
@@ -208,6 +209,20 @@ const std::vector<Flag> kMltFlags = {
      "image of it from the first half of burn-in, so that dim regions get as many mutations "
      "per pixel as bright ones (default {default}; doc/design.md, \"The target\")",
      0, 0, nullptr, [] { return std::string(target_name(MltOptions().target)); }},
+    {"--strata", "none|auto|PIXELS", Section::Mlt,
+     [](JobOptions& o, const FlagValue& v) {
+         o.mlt.strata = v.text == "none"   ? 0
+                        : v.text == "auto" ? kStrataAuto
+                                           : std::uint32_t(v.integer());
+     },
+     "stratified MLT: the film cut into square tiles of PIXELS on a side ({range}), each "
+     "with its own chains and normalization; auto: tiles of at least 8 pixels, at most one "
+     "for every 4 work-groups of chains (default {default}; doc/design.md, \"Strata\")",
+     1, 16384, nullptr,
+     [] {
+         std::uint32_t s = MltOptions().strata;
+         return s == 0 ? std::string("none") : s == kStrataAuto ? "auto" : std::to_string(s);
+     }},
     {"--large-step", "P", Section::Mlt,
      [](JobOptions& o, const FlagValue& v) { o.mlt.large_step = float(v.probability()); },
      "probability that a mutation draws a whole new path (default {default})", 0, 0, nullptr,

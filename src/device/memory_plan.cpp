@@ -154,6 +154,17 @@ MemoryPlan plan_mlt(const DeviceScene& ds, const ChainShape& shape, std::size_t 
     // Each chain's start, (round, index) (cl/mlt/burnin.cl).
     add(p, Buffer::Picks, chains * 2 * sizeof(std::uint32_t));
     add(p, Buffer::TargetWeights, shape.target_cells * sizeof(float));
+    // The strata (src/render/strata.hpp): at most a tile per work-group, the
+    // group's tile, and per tile, for the burn-in, where the round's samples
+    // of the tile begin and the reservoir's threshold.
+    const std::uint64_t groups = group_rows(threads), tiles = shape.strata ? groups : 1;
+    add(p, Buffer::StrataTiles, tiles * sizeof(FilmTile));
+    add(p, Buffer::StrataWeights, tiles * sizeof(float));
+    add(p, Buffer::GroupTiles, groups * sizeof(std::uint32_t));
+    add(p, Buffer::BurnInFirst, (tiles + 1) * sizeof(std::uint32_t));
+    add(p, Buffer::BurnInReplace, tiles * sizeof(cl_ulong));
+    // The round's samples in the order of their tiles.
+    add(p, Buffer::BurnInOrder, threads * sizeof(std::uint32_t));
     add(p, Buffer::Luminance, threads * sizeof(float));
     // The burn-in's 64-bit fixed-point weights, scanned in place (cl/mlt/burnin.cl).
     add(p, Buffer::Scan, threads * sizeof(std::uint64_t));

@@ -32,6 +32,12 @@ namespace smallmlt {
     X(Stats, "stats")                                                                              \
     X(Picks, "picks")                                                                              \
     X(TargetWeights, "target weights")                                                             \
+    X(StrataTiles, "strata tiles")                                                                 \
+    X(StrataWeights, "strata weights")                                                             \
+    X(GroupTiles, "group tiles")                                                                   \
+    X(BurnInOrder, "burn-in order")                                                                \
+    X(BurnInFirst, "burn-in tile starts")                                                          \
+    X(BurnInReplace, "burn-in thresholds")                                                         \
     X(Luminance, "luminance")                                                                      \
     X(Scan, "scan")                                                                                \
     X(ScanBlocks, "scan blocks")                                                                   \
@@ -71,6 +77,7 @@ struct ChainShape {
     bool omc_part = false;          // a split: the OMC part's film and counters too
     std::uint32_t target_cells = 1; // weights of the chains' target (src/render/target.hpp)
     std::uint32_t film_layers = 1;  // 2 with Kelemen's weights: the large steps' own
+    bool strata = false;            // stratified MLT: up to a tile per work-group
     std::uint32_t chains() const { return threads / proposals; }
 };
 

@@ -57,25 +57,65 @@ std::uint64_t burnin_replace_threshold(double s, double total, std::uint32_t rou
     return std::min(std::uint64_t(one), std::uint64_t(std::llround(s / total * one)));
 }
 
-BurnInPicker::BurnInPicker(const ClContext& cl, cl_program program, std::uint32_t max_n)
+BurnInPicker::BurnInPicker(const ClContext& cl, cl_program program, std::uint32_t max_n,
+                           std::uint32_t tiles, std::uint32_t tile_room)
     : cl_(cl), scan_(cl, program, max_n, sizeof(cl_ulong)), weights_(program, "burnin_weights"),
-      pick_(program, "burnin_pick") {}
+      pick_(program, "burnin_pick"),
+      order_(cl, CL_MEM_READ_ONLY, std::size_t(max_n) * sizeof(cl_uint)),
+      first_(cl, CL_MEM_READ_ONLY, (std::size_t(std::max(tiles, tile_room)) + 1) * sizeof(cl_uint)),
+      replace_(cl, CL_MEM_READ_ONLY, std::size_t(std::max(tiles, tile_room)) * sizeof(cl_ulong)),
+      total_(tiles, 0.0), seen_(tiles, 0) {}
 
 void BurnInPicker::add_round(const ClBuffer& lum, const std::vector<float>& host, std::uint32_t n,
                              const ClBuffer& scan, std::uint64_t seed, std::uint32_t round,
-                             std::uint32_t count, const ClBuffer& picks) {
-    // The luminances burnin_weights keeps: finite and positive.
-    double sum = 0;
+                             std::uint32_t count, const ClBuffer& picks, const PickStrata& strata) {
+    const std::size_t tiles = total_.size();
+    auto tile_of = [&](std::uint32_t i) {
+        return strata.sample_tile ? (*strata.sample_tile)[i] : 0;
+    };
+    // The samples in the order of their strata (stable), where each stratum's
+    // begin, and the luminances burnin_weights keeps: finite and positive.
+    std::vector<cl_uint> first(tiles + 1, 0), order(n);
+    std::vector<double> sum(tiles, 0.0);
+    double round_sum = 0;
+    for (std::uint32_t i = 0; i < n; ++i) {
+        ++first[tile_of(i) + 1];
+        if (std::isfinite(host[i]) && host[i] > 0) {
+            sum[tile_of(i)] += host[i];
+            round_sum += host[i];
+        }
+    }
+    for (std::size_t t = 0; t < tiles; ++t)
+        first[t + 1] += first[t];
+    std::vector<cl_uint> at(first.begin(), first.end() - 1);
     for (std::uint32_t i = 0; i < n; ++i)
-        if (std::isfinite(host[i]) && host[i] > 0) sum += host[i];
-    total_ += sum;
-    std::uint64_t replace = burnin_replace_threshold(sum, total_, rounds_++);
-    if (replace == 0 || count == 0) return;
-    weights_.set_args(lum, cl_uint(n), cl_int(burnin_weight_exponent(sum)), scan);
+        order[at[tile_of(i)]++] = i;
+    std::vector<cl_ulong> replace(tiles, 0);
+    bool any = false;
+    for (std::size_t t = 0; t < tiles; ++t) {
+        if (first[t + 1] == first[t]) continue; // no sample in it: its picks stay
+        total_[t] += sum[t];
+        replace[t] = burnin_replace_threshold(sum[t], total_[t], seen_[t]++);
+        any = any || replace[t] > 0;
+    }
+    ++rounds_;
+    if (!any || count == 0) return;
+    first.resize(first_.bytes() / sizeof(cl_uint), first.back());
+    replace.resize(replace_.bytes() / sizeof(cl_ulong), 0);
+    order.resize(order_.bytes() / sizeof(cl_uint), 0);
+    order_.write(cl_, order.data());
+    first_.write(cl_, first.data());
+    replace_.write(cl_, replace.data());
+    weights_.set_args(lum, order_, cl_uint(n), cl_int(burnin_weight_exponent(round_sum)), scan);
     weights_.enqueue(cl_, n);
     scan_.run(scan, scan, n); // in place
-    pick_.set_args(scan, cl_uint(n), cl_ulong(seed), cl_uint(round), cl_ulong(replace),
-                   cl_uint(count), picks);
+    if (!strata.group_tile && !one_tile_.get()) {
+        one_tile_ = ClBuffer(cl_, CL_MEM_READ_ONLY, sizeof(cl_uint));
+        one_tile_.fill_zero(cl_);
+    }
+    const ClBuffer& group_tile = strata.group_tile ? *strata.group_tile : one_tile_;
+    pick_.set_args(scan, order_, first_, group_tile, cl_uint(strata.group_chains), cl_ulong(seed),
+                   cl_uint(round), replace_, cl_uint(count), picks);
     pick_.run(cl_, count);
 }
 

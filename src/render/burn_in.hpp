@@ -50,35 +50,50 @@ int burnin_weight_exponent(double sum);
 // 2^32 / (round + 1), so that picks stay uniform over all samples so far.
 std::uint64_t burnin_replace_threshold(double s, double total, std::uint32_t round);
 
+// Which stratum (src/render/strata.hpp) each sample of a round and each
+// chain is in: sample i of the round in tile sample_tile[i], chain j in tile
+// group_tile[j / group_chains] on the device. The default is one stratum.
+struct PickStrata {
+    const std::vector<std::uint32_t>* sample_tile = nullptr; // null: every sample in tile 0
+    const ClBuffer* group_tile = nullptr;                    // null: every chain in tile 0
+    std::uint32_t group_chains = 0xFFFFFFFFu;
+};
+
 // The burn-in's chain starts, on the device, pooled over rounds by a
-// weighted reservoir (cl/mlt/burnin.cl): in each round, every chain replaces its
-// pick with probability s_r / (s_0 + .. + s_r) by a sample of the round
-// drawn in proportion to luminance (fixed-point weights, their prefix sum,
-// binary search). After the last round each chain's pick is an independent
-// draw from all the rounds' samples in proportion to luminance (uniform if
+// weighted reservoir (cl/mlt/burnin.cl): in each round, every chain replaces
+// its pick with probability s_r / (s_0 + .. + s_r), the sums of its
+// stratum's luminances, by a sample of the round in its stratum drawn in
+// proportion to luminance (fixed-point weights in the order of the strata,
+// their prefix sum, binary search within the stratum's part). After the
+// last round each chain's pick is an independent draw from all the rounds'
+// samples of its stratum in proportion to luminance (uniform among them if
 // none had light).
 class BurnInPicker {
   public:
-    // For rounds of up to max_n samples; `program` holds cl/core/rng.h,
+    // For rounds of up to max_n samples in `tiles` strata, with room for
+    // tile_room (the memory plan's); `program` holds cl/core/rng.h,
     // cl/core/scan.cl (SCAN_T ulong) and cl/mlt/burnin.cl.
-    BurnInPicker(const ClContext& cl, cl_program program, std::uint32_t max_n);
+    BurnInPicker(const ClContext& cl, cl_program program, std::uint32_t max_n,
+                 std::uint32_t tiles = 1, std::uint32_t tile_room = 1);
     // Adds the next round, the samples of burn-in round `round`, of n samples
     // whose luminances are `lum` on the device and `host` (the same values,
-    // read back): each of
-    // the `count` picks (uint2 (round, index) each, in `picks`) is replaced
-    // as above, with the streams of `seed` and the round. `scan` (n x 8
-    // bytes) is left holding the prefix sums of the round's weights.
+    // read back): each of the `count` picks (uint2 (round, index) each, in
+    // `picks`) is replaced as above, with the streams of `seed` and the
+    // round. `scan` (n x 8 bytes) is left holding the prefix sums of the
+    // round's weights in the strata's order.
     void add_round(const ClBuffer& lum, const std::vector<float>& host, std::uint32_t n,
                    const ClBuffer& scan, std::uint64_t seed, std::uint32_t round,
-                   std::uint32_t count, const ClBuffer& picks);
+                   std::uint32_t count, const ClBuffer& picks, const PickStrata& strata = {});
     std::uint32_t rounds() const { return rounds_; }
 
   private:
     const ClContext& cl_;
     DeviceScan scan_;
     ClKernel weights_, pick_;
+    ClBuffer order_, first_, replace_, one_tile_;
     std::uint32_t rounds_ = 0;
-    double total_ = 0; // luminance sum of the rounds so far
+    std::vector<double> total_;       // per stratum, luminance sum of the rounds so far
+    std::vector<std::uint32_t> seen_; // per stratum, rounds that had samples in it
 };
 
 // What the burn-in's paths leave for a split (src/render/split.hpp): per

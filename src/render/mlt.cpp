@@ -41,6 +41,17 @@ const DeviceScene& require_device(const ClContext& cl, const DeviceScene& ds,
     return ds;
 }
 
+std::uint32_t group_chains(const MltOptions& opt) {
+    return std::uint32_t(kDefaultWorkGroup) / opt.proposals;
+}
+
+StrataGrid grid_of(const DeviceScene& ds, const MltOptions& opt) {
+    const std::uint32_t groups =
+        std::uint32_t((opt.threads + kDefaultWorkGroup - 1) / kDefaultWorkGroup);
+    const std::uint32_t w = ds.frame.width, h = ds.frame.height;
+    return strata_grid(w, h, opt.strata ? strata_side(opt.strata, w, h, groups) : 0);
+}
+
 std::uint64_t max_alloc(const ClContext& cl, const MltOptions& opt) {
     return opt.max_alloc_bytes ? opt.max_alloc_bytes : cl.device().max_alloc_bytes;
 }
@@ -77,7 +88,8 @@ MltRenderer::MltRenderer(const ClContext& cl, const DeviceScene& ds, const MltOp
       values_(cl, CL_MEM_READ_WRITE, plan_.bytes(Buffer::Values)),
       stats_(cl, CL_MEM_READ_WRITE, plan_.bytes(Buffer::Stats)),
       picks_(cl, CL_MEM_READ_WRITE, plan_.bytes(Buffer::Picks)),
-      target_(cl, plan_.bytes(Buffer::TargetWeights)),
+      target_(cl, plan_.bytes(Buffer::TargetWeights)), grid_(grid_of(ds, opt)),
+      strata_(cl, plan_, grid_, group_chains(opt)),
       burn_in_film_(smallmlt::burn_in_film(mlt_seed(opt.seed, MltStream::Pixel),
                                            mlt_seed(opt.seed, MltStream::FilmOffset),
                                            std::uint32_t(pixels()), opt.threads)),
@@ -85,6 +97,8 @@ MltRenderer::MltRenderer(const ClContext& cl, const DeviceScene& ds, const MltOp
       film_(cl, pixels(),
             plan_mlt_film(pixels(), opt.threads, max_alloc(cl, opt), opt.film_atomics64,
                           opt.film_pass_mutations, mlt_chain_shape(opt).film_layers)) {
+    kelemen_pb_.assign(grid_.count(), 0.0f);
+    kelemen_b0_.assign(grid_.count(), 0.0);
     split_ = opt.split;
     if (opt.split != Split::None)
         omc_ = make_omc_part(split_ == Split::Auto ? kChainsSplit : split_);
@@ -95,11 +109,20 @@ MltRenderer::MltRenderer(const ClContext& cl, const DeviceScene& ds, const MltOp
 
 void MltRenderer::sample_starts(RankGroup& ranks) {
     burn_in_.run(ranks, plan_, scene_, target_, burn_in_film_,
-                 MltBurnIn::Chains{state_, stats_, picks_, chains()});
+                 MltBurnIn::Chains{state_, stats_, picks_, chains()}, grid_, strata_);
 }
 
 BEstimate MltRenderer::b_estimate(const MltStats& s) const {
-    return burn_in_.sums().b(s.large_lum, s.large);
+    BEstimate e = burn_in_.sums().b(s.large_lum, s.large);
+    if (grid_.count() > 1) { // the tiles' B by their areas; the error as of one tile
+        const std::vector<double> b = tile_b();
+        double sum = 0;
+        for (std::uint32_t t = 0; t < grid_.count(); ++t)
+            sum += b[t] * grid_.area(t, pixels());
+        e.rel_error = sum > 0 ? e.rel_error * e.b / sum : 0;
+        e.b = sum;
+    }
+    return e;
 }
 
 double MltRenderer::b() const {
@@ -113,10 +136,16 @@ double MltRenderer::b_rel_error() const {
 void MltRenderer::prepare(RankGroup& ranks) {
     Clock::time_point t0 = Clock::now();
     sample_starts(ranks);
+    kelemen_pb_.assign(grid_.count(), 0.0f);
+    kelemen_b0_.assign(grid_.count(), 0.0);
     if (kelemen_in_force(opt_)) {
         const double p = std::clamp(double(large_step_of(opt_)), 0.0, 1.0);
-        kelemen_pb_ = float(p * burn_in_.ranks_b(ranks) * hooks_.b0_scale);
-        kelemen_b0_ = double(kelemen_pb_) / p; // as the weights have it
+        const std::vector<double> b0 = burn_in_.ranks_b(ranks, grid_);
+        for (std::uint32_t t = 0; t < grid_.count(); ++t) {
+            kelemen_pb_[t] = float(p * b0[t] * hooks_.b0_scale);
+            kelemen_b0_[t] = double(kelemen_pb_[t]) / p; // as the weights have it
+        }
+        strata_.set_kelemen_pb(kelemen_pb_);
     }
     if (split_ == Split::Auto) {
         bool pay = ranks.all(chains_pay(mlt_relative_variance()));
@@ -150,14 +179,14 @@ std::unique_ptr<OmcSchedule> MltRenderer::make_omc_part(Split split) const {
 
 void MltRenderer::init_chains() {
     cl_ulong omc_seed = mlt_seed(opt_.seed, MltStream::Omc);
-    k_init_.set_args(scene_, target_, burn_in_film_, state_, values_, cl_uint(chains()), omc_seed,
-                     picks_, stats_);
+    k_init_.set_args(scene_, target_, burn_in_film_, strata_, state_, values_, cl_uint(chains()),
+                     omc_seed, picks_, stats_);
     k_init_.enqueue(cl_, chains());
     cl_.finish("kernel mlt_init over " + std::to_string(chains()) + " chains");
 }
 
 void MltRenderer::owed(std::uint32_t mode) const {
-    k_owed_.set_args(ds_.frame, target_, cl_float(kelemen_pb_), state_, values_, cl_uint(chains()),
+    k_owed_.set_args(ds_.frame, target_, strata_, state_, values_, cl_uint(chains()),
                      cl_ulong(mlt_seed(opt_.seed, MltStream::Step)), cl_uint(iterations_), film_,
                      cl_uint(mode));
     k_owed_.enqueue(cl_, chains());
@@ -175,9 +204,9 @@ void MltRenderer::step(std::uint32_t n) {
         cl_uint iteration = ++iterations_;
         if (chains) {
             ++steps_run_;
-            k_step_.set_args(scene_, target_, state_, values_, cl_uint(opt_.threads),
-                             cl_uint(opt_.proposals), seed, iteration, threshold,
-                             cl_float(kelemen_pb_), film_, stats_, cl_uint(opt_.stuck_run));
+            k_step_.set_args(scene_, target_, strata_, state_, values_, cl_uint(opt_.threads),
+                             cl_uint(opt_.proposals), seed, iteration, threshold, film_, stats_,
+                             cl_uint(opt_.stuck_run));
             k_step_.enqueue(cl_, opt_.threads);
             // The pass ends: every chain splats what it owes, and the film's
             // words go to the host before the next pass could overflow them.
@@ -247,7 +276,13 @@ MltReport MltRenderer::report() const {
     r.omc_rate = omc_rate();
     r.mlt_relative_variance = omc_ ? mlt_relative_variance() : 0;
     r.kelemen = opt_.kelemen;
-    r.kelemen_pb = kelemen_pb_;
+    r.strata = grid_.count();
+    if (!kelemen_pb_.empty()) {
+        double pb = 0; // p b0 of the whole film: the tiles' p B0 by their areas
+        for (std::uint32_t t = 0; t < grid_.count(); ++t)
+            pb += double(kelemen_pb_[t]) * grid_.area(t, pixels());
+        r.kelemen_pb = grid_.count() == 1 ? kelemen_pb_[0] : float(pb);
+    }
     r.two_stage = opt_.target == Target::TwoStage;
     r.target_cells = target_cell_count(target_.cells(), ds_.frame.height);
     return r;
@@ -267,8 +302,8 @@ std::uint64_t MltRenderer::units_for_spp(std::uint32_t spp, int rank, int ranks)
 }
 
 MltTally MltRenderer::mlt_tally() const {
-    const std::uint32_t layers = film_.plan().shape.layers;
-    MltTally t = MltTally::shaped(pixels(), layers, omc_ != nullptr);
+    const std::uint32_t layers = film_.plan().shape.layers, tiles = grid_.count();
+    MltTally t = MltTally::shaped(pixels(), layers, omc_ != nullptr, tiles);
     // The film with the stay weights the chains have gathered and not yet
     // splatted, which are then taken out again.
     owed(kOwedAdd);
@@ -281,12 +316,9 @@ MltTally MltRenderer::mlt_tally() const {
         t.film[i] = words[at + 3 * FILM_LAYER_CHAINS] << shift;
         if (layers > 1) t.large_film[i] = words[at + 3 * FILM_LAYER_LARGE] << shift;
     }
-    MltStats s = stats();
-    t.mutations = s.mutations;
-    t.burn_in_lum = burn_in_.sums().lum_fixed;
+    tile_counts(t);
+    t.burn_in_lum = burn_in_.sums().tile_lum;
     t.burn_in_samples = burn_in_.sums().samples;
-    t.large_lum = s.large_lum;
-    t.large = s.large;
     t.burn_in_lum2 = burn_in_.sums().lum2;
     if (omc_) {
         Tally o = omc_->part().tally(); // spp, then sums per pixel and channel
@@ -302,6 +334,35 @@ MltTally MltRenderer::mlt_tally() const {
     return t;
 }
 
+void MltRenderer::tile_counts(MltTally& t) const {
+    // Each group's row of counters and its threads go to its tile.
+    std::vector<std::uint64_t> rows(stats_.bytes() / sizeof(cl_ulong));
+    stats_.read(cl_, rows.data());
+    const std::vector<std::uint32_t>& group_tile = strata_.group_tiles();
+    for (std::size_t g = 0; g < group_tile.size(); ++g) {
+        const std::uint32_t tile = group_tile[g];
+        const std::uint64_t first = g * kDefaultWorkGroup;
+        const std::uint64_t threads =
+            first < opt_.threads ? std::min<std::uint64_t>(kDefaultWorkGroup, opt_.threads - first)
+                                 : 0;
+        t.mutations[tile] += std::uint64_t(steps_run_) * threads;
+        t.large_lum[tile] += rows[g * MLT_STAT_COUNT + MLT_STAT_LARGE_LUM];
+        t.large[tile] += rows[g * MLT_STAT_COUNT + MLT_STAT_LARGE];
+    }
+    t.burn_in_lum = burn_in_.sums().tile_lum;
+    t.burn_in_samples = burn_in_.sums().samples;
+}
+
+std::vector<double> MltRenderer::tile_b() const {
+    MltTally t = MltTally::shaped(0, 1, false, grid_.count());
+    tile_counts(t);
+    std::vector<double> b(grid_.count());
+    for (std::uint32_t s = 0; s < grid_.count(); ++s)
+        b[s] = mlt_tile_b(t.burn_in_lum[s], t.burn_in_samples, grid_.area(s, pixels()),
+                          t.large_lum[s], t.large[s]);
+    return b;
+}
+
 Tally MltRenderer::tally() const {
     return mlt_tally().to_tally();
 }
@@ -315,18 +376,28 @@ Image MltRenderer::part_image(Part part) const {
 }
 
 Image MltRenderer::image_of(const Tally& summed, bool mlt, bool omc) const {
-    MltTally t = MltTally::shaped(pixels(), film_.plan().shape.layers, omc_ != nullptr);
+    const std::uint32_t tiles = grid_.count();
+    MltTally t = MltTally::shaped(pixels(), film_.plan().shape.layers, omc_ != nullptr, tiles);
     t.read(summed);
     Image img(int(ds_.frame.width), int(ds_.frame.height));
     const std::size_t n = 3 * pixels();
-    if (mlt && t.mutations > 0) {
-        double b = mlt_b(t.burn_in_lum + t.large_lum, t.burn_in_samples + t.large);
-        double unit = double(pixels()) / double(t.mutations) / double(1u << FILM64_FRAC_BITS);
+    if (mlt) {
+        // Per tile: B, and the film's unit in radiance per mutation.
+        std::vector<double> b(tiles, 0), unit(tiles, 0);
+        for (std::uint32_t s = 0; s < tiles; ++s) {
+            if (t.mutations[s] == 0) continue;
+            const double area = grid_.area(s, pixels());
+            b[s] =
+                mlt_tile_b(t.burn_in_lum[s], t.burn_in_samples, area, t.large_lum[s], t.large[s]);
+            unit[s] =
+                double(pixels()) * area / double(t.mutations[s]) / double(1u << FILM64_FRAC_BITS);
+        }
         const bool large = !t.large_film.empty();
         for (std::size_t i = 0; i < n; ++i) {
-            double v = double(t.film[i]) * b;
-            if (large) v += double(t.large_film[i]) * kelemen_b0_;
-            img.rgb[i] = float(v * unit);
+            const std::uint32_t s = grid_.pixel_tile[i / 3];
+            double v = double(t.film[i]) * b[s];
+            if (large) v += double(t.large_film[i]) * kelemen_b0_[s];
+            img.rgb[i] = float(v * unit[s]);
         }
     }
     if (omc && omc_) {

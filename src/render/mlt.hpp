@@ -16,6 +16,8 @@
 #include "render/mlt_tally.hpp"
 #include "render/omc_schedule.hpp"
 #include "render/split.hpp"
+#include "render/strata.hpp"
+#include "render/strata_buffer.hpp"
 #include "render/target_buffer.hpp"
 #include "scene/device_scene.hpp"
 
@@ -88,8 +90,10 @@ class MltRenderer : public Integrator {
     // What the render has rendered (src/render/mlt_tally.hpp), as a Tally.
     Tally tally() const override;
     MltTally mlt_tally() const;
-    // (b * chains' splats + b0 * large steps' splats) * pixels / mutations,
-    // b from the summed samples and b0 that of Kelemen's weights (the
+    // Per tile of the strata (one without), (B * chains' splats + B0 *
+    // large steps' splats) * the tile's pixels / its mutations, B the tile's
+    // mean of I from the summed samples (mlt_tile_b; with one tile, b) and
+    // B0 that of Kelemen's weights (the
     // balance heuristic's two estimates, src/render/mlt_options.hpp: the
     // chains' is normalized by b, the large steps' by the b0 their weights
     // took; with b in place of b0 the image would tend to
@@ -113,6 +117,11 @@ class MltRenderer : public Integrator {
     // r of chains_pay (src/render/split.hpp), from the burn-in.
     double mlt_relative_variance() const;
     const MltFilm& film() const { return film_; }
+    // The strata: the tiles, and the tile of each work-group of chains.
+    const StrataGrid& strata_grid() const { return grid_; }
+    const std::vector<std::uint32_t>& group_tiles() const { return strata_.group_tiles(); }
+    // B per tile (b with one tile), from the samples so far.
+    std::vector<double> tile_b() const;
     // Where the burn-in's samples lie on the film, what they left per pixel,
     // and the OMC part's first Sobol sample number (after the burn-in's).
     const BurnInFilm& burn_in_film() const { return burn_in_film_; }
@@ -134,6 +143,8 @@ class MltRenderer : public Integrator {
     SceneBuffers scene_;
     ClBuffer state_, values_, stats_, picks_;
     TargetBuffer target_;     // one cell of weight 1 until two-stage fixes them
+    StrataGrid grid_;         // the strata's tiles (src/render/strata.hpp)
+    StrataBuffer strata_;     // the tiles, the groups' tiles and p b0 per tile
     BurnInFilm burn_in_film_; // where the burn-in's samples lie on the film
     MltBurnIn burn_in_;
     MltFilm film_;
@@ -142,13 +153,16 @@ class MltRenderer : public Integrator {
     std::uint32_t steps_run_ = 0;      // steps of the chains (none with Split::All)
     // The OMC part's path tracer for `split`.
     std::unique_ptr<OmcSchedule> make_omc_part(Split split) const;
-    // Kelemen's weights: p b0, b0 from every rank's burn-in, and b0 itself,
-    // which scales the large steps' layer of the film; 0 without.
-    float kelemen_pb_ = 0;
-    double kelemen_b0_ = 0;
+    // Kelemen's weights, per tile: p B0, B0 from every rank's burn-in, and
+    // B0 itself, which scales the large steps' layer of the film; 0 without.
+    std::vector<float> kelemen_pb_;
+    std::vector<double> kelemen_b0_;
     // What the split's rule weighs, from the burn-in and the first step.
     SplitCosts split_costs() const;
     Image image_of(const Tally& summed, bool mlt, bool omc) const;
+    // Adds each tile's mutations and large steps (from its work-groups' rows
+    // of counters) and its burn-in sums to t.
+    void tile_counts(MltTally& t) const;
     // Runs mlt_owed in `mode` (MLT_OWED_* of cl/kernels/mlt.cl).
     void owed(std::uint32_t mode) const;
     BEstimate b_estimate(const MltStats& s) const;

@@ -13,6 +13,12 @@ double mlt_b(std::uint64_t lum_fixed, std::uint64_t samples) {
     return samples ? double(lum_fixed) / double(1u << MLT_B_FRAC_BITS) / double(samples) : 0;
 }
 
+double mlt_tile_b(std::uint64_t burn_in_lum, std::uint64_t samples, double area,
+                  std::uint64_t large_lum, std::uint64_t large) {
+    const double n = double(samples) * area + double(large);
+    return n > 0 ? double(burn_in_lum + large_lum) / double(1u << MLT_B_FRAC_BITS) / n : 0;
+}
+
 BEstimate BurnInSums::b(std::uint64_t large_lum, std::uint64_t large) const {
     BEstimate e;
     e.b = mlt_b(lum_fixed + large_lum, samples + large);
@@ -21,11 +27,17 @@ BEstimate BurnInSums::b(std::uint64_t large_lum, std::uint64_t large) const {
     return e;
 }
 
-double MltBurnIn::ranks_b(RankGroup& ranks) const {
+std::vector<double> MltBurnIn::ranks_b(RankGroup& ranks, const StrataGrid& grid) const {
     // Whole numbers, summed exactly in double below 2^53.
-    std::vector<double> sums{double(sums_.lum_fixed), double(sums_.samples)};
+    std::vector<double> sums(sums_.tile_lum.begin(), sums_.tile_lum.end());
+    sums.push_back(double(sums_.samples));
     ranks.sum_all(sums);
-    return mlt_b(std::uint64_t(sums[0]), std::uint64_t(sums[1]));
+    const std::uint64_t pixels = grid.pixel_tile.size();
+    std::vector<double> b(grid.count());
+    for (std::uint32_t t = 0; t < grid.count(); ++t)
+        b[t] = mlt_tile_b(std::uint64_t(sums[t]), std::uint64_t(sums.back()), grid.area(t, pixels),
+                          0, 0);
+    return b;
 }
 
 MltBurnIn::MltBurnIn(const ClContext& cl, cl_program program, const MltOptions& opt,
@@ -35,7 +47,8 @@ MltBurnIn::MltBurnIn(const ClContext& cl, cl_program program, const MltOptions& 
 }
 
 void MltBurnIn::run(RankGroup& ranks, const MemoryPlan& plan, const SceneBuffers& scene,
-                    TargetBuffer& target, const BurnInFilm& film, const Chains& chains) {
+                    TargetBuffer& target, const BurnInFilm& film, const Chains& chains,
+                    const StrataGrid& grid, StrataBuffer& strata) {
     const std::uint32_t m = opt_.threads, iters = std::max(1u, opt_.burn_in_iters);
     const bool parts = keeps_parts();
     // Rounds before `first` only measure the two-stage target's weights.
@@ -44,9 +57,14 @@ void MltBurnIn::run(RankGroup& ranks, const MemoryPlan& plan, const SceneBuffers
     ClBuffer scan(cl_, CL_MEM_READ_WRITE, plan.bytes(Buffer::Scan));
     ClBuffer omc =
         parts ? ClBuffer(cl_, CL_MEM_READ_WRITE, plan.bytes(Buffer::OmcSamples)) : ClBuffer();
-    BurnInPicker picker(cl_, program_, m);
+    const std::uint32_t tiles = grid.count(), pixels = std::uint32_t(grid.pixel_tile.size());
+    BurnInPicker picker(cl_, program_, m, tiles,
+                        std::uint32_t(plan.bytes(Buffer::BurnInReplace) / sizeof(cl_ulong)));
     std::vector<float> host(m), host_omc(parts ? 8 * m : 0);
+    std::vector<std::uint32_t> sample_tile(m);
+    const std::uint32_t groups = std::uint32_t(strata.group_tiles().size());
     BurnInSums s;
+    s.tile_lum.assign(tiles, 0);
     const std::uint64_t omc_seed = mlt_seed(opt_.seed, MltStream::Omc);
     const std::uint64_t pick_seed = mlt_seed(opt_.seed, MltStream::Pick);
     for (std::uint32_t it = 0; it < iters; ++it) {
@@ -62,12 +80,22 @@ void MltBurnIn::run(RankGroup& ranks, const MemoryPlan& plan, const SceneBuffers
             parts_.add(host_omc);
         }
         if (it < first) continue;
-        for (float y : host) {
+        std::vector<double> round_lum(tiles, 0.0);
+        for (std::uint32_t i = 0; i < m; ++i) {
+            const float y = host[i];
+            const std::uint32_t pixel =
+                burn_in_film_sample(film, pixels, std::uint64_t(it) * film.per_round + i).first;
+            const std::uint32_t t = sample_tile[i] = grid.pixel_tile[pixel];
+            s.tile_lum[t] += fixed_b_sample(y);
             s.lum_fixed += fixed_b_sample(y);
             s.lum2 += double(y) * y;
+            round_lum[t] += double(fixed_b_sample(y));
         }
+        if (it == first && tiles > 1)
+            strata.deal(strata_group_tiles(strata_groups(round_lum, groups), groups));
         if (opt_.burn_in)
-            picker.add_round(lum, host, m, scan, pick_seed, it, chains.count, chains.picks);
+            picker.add_round(lum, host, m, scan, pick_seed, it, chains.count, chains.picks,
+                             PickStrata{&sample_tile, &strata.group_tile(), strata.group_chains()});
     }
     if (!opt_.burn_in) {
         // Fresh samples: round iters, after those that estimated b.

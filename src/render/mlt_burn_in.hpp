@@ -12,6 +12,7 @@
 #include "render/burn_in.hpp"
 #include "render/mlt_options.hpp"
 #include "render/ranks.hpp"
+#include "render/strata_buffer.hpp"
 #include "render/target_buffer.hpp"
 
 #include <cstdint>
@@ -20,6 +21,15 @@ namespace smallmlt {
 
 // b from a fixed-point sum of `samples` luminances (cl/core/fixed_point.h).
 double mlt_b(std::uint64_t lum_fixed, std::uint64_t samples);
+// A tile's B, the mean of I over it (src/render/strata.hpp): the fixed-point
+// luminance sums of the burn-in's samples that landed in it and of its
+// `large` large steps, over the samples the burn-in's `samples` put there in
+// expectation (samples x area, area its share of the film) and the large
+// steps. Unbiased: a burn-in sample lands in the tile with probability area
+// and is then uniform in it, and a large step is uniform in it. With one
+// tile, area 1: mlt_b of the sums.
+double mlt_tile_b(std::uint64_t burn_in_lum, std::uint64_t samples, double area,
+                  std::uint64_t large_lum, std::uint64_t large);
 
 // b and its relative standard error.
 struct BEstimate {
@@ -31,8 +41,9 @@ struct BEstimate {
 struct BurnInSums {
     std::uint64_t lum_fixed = 0; // sum of I, MLT_B_FRAC_BITS fixed point
     std::uint64_t samples = 0;
-    double lum2 = 0;     // sum of I^2
-    double variance = 0; // of one sample's I (unbiased)
+    std::vector<std::uint64_t> tile_lum; // lum_fixed of the samples in each tile
+    double lum2 = 0;                     // sum of I^2
+    double variance = 0;                 // of one sample's I (unbiased)
     // b from these and `large` large steps of fixed-point sum large_lum
     // (each an OMC sample of I), with the error of the burn-in's variance
     // over all of them.
@@ -51,14 +62,18 @@ class MltBurnIn {
     // pixel are kept for `pixels` pixels where `opt` needs them.
     MltBurnIn(const ClContext& cl, cl_program program, const MltOptions& opt, std::uint64_t pixels);
     // Runs every round on the rank (ranks meet only where the two-stage
-    // target is fixed). Without burn-in, the picks are fresh samples.
+    // target is fixed). The first round that estimates b deals the chains'
+    // work-groups to the grid's tiles (strata_groups, by each tile's
+    // luminance sum), and each chain picks its start among its tile's
+    // samples. Without burn-in, the picks are fresh samples.
     void run(RankGroup& ranks, const MemoryPlan& plan, const SceneBuffers& scene,
-             TargetBuffer& target, const BurnInFilm& film, const Chains& chains);
+             TargetBuffer& target, const BurnInFilm& film, const Chains& chains,
+             const StrataGrid& grid, StrataBuffer& strata);
 
     const BurnInSums& sums() const { return sums_; }
-    // b of every rank's burn-in samples (a collective; the same on every
-    // rank): b0, the normalization Kelemen's weights take.
-    double ranks_b(RankGroup& ranks) const;
+    // Per tile, B of every rank's burn-in samples (a collective; the same on
+    // every rank): b0, the normalization Kelemen's weights take.
+    std::vector<double> ranks_b(RankGroup& ranks, const StrataGrid& grid) const;
     // The paths' parts per pixel; empty unless a split or the two-stage
     // target needs them.
     const BurnInParts& parts() const { return parts_; }

@@ -77,6 +77,9 @@ struct MltOptions {
     // chains' expected values by the balance heuristic. Off: expected values
     // alone, and the image's mean is b.
     bool kelemen = kDefaultKelemen;
+    // Stratified MLT (src/render/strata.hpp): the tiles' side in pixels, 0
+    // for none (one tile, the whole film), kStrataAuto for the rule's.
+    std::uint32_t strata = 0;
 };
 
 // The large step's probability where none is given: it depends on burn-in
@@ -107,6 +110,7 @@ inline ChainShape mlt_chain_shape(const MltOptions& opt, const MltTestHooks& hoo
     s.omc_part = opt.split != Split::None;
     s.target_cells = opt.target == Target::TwoStage ? kTargetMaxCells : 1;
     s.film_layers = kelemen_in_force(opt) ? 2 : 1;
+    s.strata = opt.strata != 0;
     return s;
 }
 

@@ -80,6 +80,10 @@ std::string mlt_summary(const MltReport& r) {
         std::snprintf(buf, sizeof buf, "; Kelemen's weights (p b0 = %.4g)", double(r.kelemen_pb));
         out += buf;
     }
+    if (r.strata > 1) {
+        std::snprintf(buf, sizeof buf, "; stratified, %u tiles", r.strata);
+        out += buf;
+    }
     if (r.two_stage && r.steps > 0) {
         std::snprintf(buf, sizeof buf, "; target two-stage (%u cells)", r.target_cells);
         out += buf;

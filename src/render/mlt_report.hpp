@@ -30,6 +30,7 @@ struct MltReport {
     double omc_rate = 0, mlt_relative_variance = 0;
     bool kelemen = false;
     float kelemen_pb = 0;
+    std::uint32_t strata = 1; // tiles of stratified MLT
     bool two_stage = false;
     std::uint32_t target_cells = 1;
 };

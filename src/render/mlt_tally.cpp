@@ -4,9 +4,12 @@
 
 namespace smallmlt {
 
-MltTally MltTally::shaped(std::uint64_t pixels, std::uint32_t layers, bool split) {
+MltTally MltTally::shaped(std::uint64_t pixels, std::uint32_t layers, bool split,
+                          std::uint32_t tiles) {
     MltTally t;
     t.film.assign(3 * pixels, 0);
+    for (std::vector<std::uint64_t>* v : {&t.mutations, &t.burn_in_lum, &t.large_lum, &t.large})
+        v->assign(tiles, 0);
     if (layers > 1) t.large_film.assign(3 * pixels, 0);
     if (split) {
         t.omc_sums.assign(3 * pixels, 0);

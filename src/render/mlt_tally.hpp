@@ -13,11 +13,14 @@ struct MltTally {
     // owe, and its large steps' layer (Kelemen's weights; else empty), in
     // units of 2^-FILM64_FRAC_BITS.
     std::vector<std::uint64_t> film, large_film;
-    std::uint64_t mutations = 0;
-    // b's samples, MLT_B_FRAC_BITS fixed point: the burn-in's luminance sum
-    // and count, the large steps' sum and count; the burn-in's sum of
-    // squared luminances.
-    std::uint64_t burn_in_lum = 0, burn_in_samples = 0, large_lum = 0, large = 0;
+    // Per tile of the strata (src/render/strata.hpp; one without): the
+    // mutations of its chains, and its normalization's samples in
+    // MLT_B_FRAC_BITS fixed point: the luminance sum of the burn-in's
+    // samples that landed in it, and its large steps' sum and count.
+    std::vector<std::uint64_t> mutations, burn_in_lum, large_lum, large;
+    // The burn-in's samples on the whole film, and their sum of squared
+    // luminances.
+    std::uint64_t burn_in_samples = 0;
     double burn_in_lum2 = 0;
     // With a split: the OMC part's samples per pixel and per pixel and
     // channel its sums; per pixel the burn-in's samples that landed in it,
@@ -28,9 +31,10 @@ struct MltTally {
     std::vector<std::uint64_t> burn_in_landed;
     std::vector<double> burn_in_omc;
 
-    // An empty tally of a film of `pixels` in `layers` layers, with or
-    // without a split's parts.
-    static MltTally shaped(std::uint64_t pixels, std::uint32_t layers, bool split);
+    // An empty tally of a film of `pixels` in `layers` layers and `tiles`
+    // tiles, with or without a split's parts.
+    static MltTally shaped(std::uint64_t pixels, std::uint32_t layers, bool split,
+                           std::uint32_t tiles = 1);
     Tally to_tally() const;
     // Reads a tally of this one's shape; throws std::logic_error if its
     // size is not this shape's.

@@ -26,6 +26,7 @@ const Row kTable[] = {
     {Stage::Sampling, "cl/sampling/sobol.cl",              true,  true},
     {Stage::Sampling, kSampleSource,                       true,  false},
     {Stage::Sampling, "cl/sampling/pss.cl",                false, true},
+    {Stage::Sampling, "cl/sampling/strata.cl",             false, true},
     {Stage::Sampling, "cl/sampling/sample_chain.cl",       false, true},
     {Stage::Sampling, "cl/sampling/burnin_film.cl",        false, true},
     {Stage::Sampling, "cl/sampling/numbers.cl",            true,  true},

@@ -75,7 +75,8 @@ inline float target_bounce(SampleSource* src, uint k, float q, bool* go_on) {
 #endif
 
 inline EvalResult eval_state(const SceneView* sc, const Frame* frame, SampleSource* src) {
-    float x = smp_uniform(src, 0u, layout_film(0u)), y = smp_uniform(src, 0u, layout_film(1u));
+    FilmPoint at = smp_film_point(src, frame);
+    float x = at.x, y = at.y;
     float f = target_value(x, y);
     uint bounces = 0u;
 #if LAYOUT_BOUNCE_DIMS > 0
@@ -92,7 +93,7 @@ inline EvalResult eval_state(const SceneView* sc, const Frame* frame, SampleSour
     EvalResult s;
     s.f = (float3)(f);
     s.omc = (float3)(0.0f);
-    s.pixel = eval_pixel(frame, x, y);
+    s.pixel = at.pixel;
     s.bounces = bounces;
     s.rays = 0u;
     return s;

@@ -46,7 +46,7 @@ __kernel void probe_lazy_eager(SCENE_ARGS, __global uint* state, __global const 
     SceneView sc = SCENE_VIEW();
     uint mode = (c & 1u) ? SMP_LARGE : SMP_SMALL;
     SampleSource lazy = smp_chain(state, c, num_chains, rng_key(seed, c, 1u), mode,
-                                  values[c].meta & CHAIN_BOUNCES_MASK);
+                                  values[c].meta & CHAIN_BOUNCES_MASK, strata_whole(&frame));
     EvalResult y = eval_state(&sc, &frame, &lazy);
     out[3u * c] = (float4)(y.f, as_float(y.bounces));
 
@@ -56,23 +56,25 @@ __kernel void probe_lazy_eager(SCENE_ARGS, __global uint* state, __global const 
             d < LAYOUT_CAMERA_DIMS ? 0u : (d - LAYOUT_CAMERA_DIMS) / max(LAYOUT_BOUNCE_DIMS, 1u);
         pss_store(eager, c, num_chains, at, smp_propose(&lazy, bounce, at));
     }
-    SampleSource replay_eager = smp_chain(eager, c, num_chains, 0ul, SMP_REPLAY, frame.depth);
+    SampleSource replay_eager =
+        smp_chain(eager, c, num_chains, 0ul, SMP_REPLAY, frame.depth, strata_whole(&frame));
     EvalResult e = eval_state(&sc, &frame, &replay_eager);
     out[3u * c + 1u] = (float4)(e.f, as_float(e.bounces));
 
     smp_commit(&lazy, y.bounces);
-    SampleSource replay_state = smp_chain(state, c, num_chains, 0ul, SMP_REPLAY, y.bounces);
+    SampleSource replay_state =
+        smp_chain(state, c, num_chains, 0ul, SMP_REPLAY, y.bounces, strata_whole(&frame));
     EvalResult r = eval_state(&sc, &frame, &replay_state);
     out[3u * c + 2u] = (float4)(r.f, as_float(r.bounces));
 }
 
-/* Pixel (histogram bin) of each chain's current state. */
-__kernel void probe_chain_pixel(const Frame frame, __global const uint* state,
+/* Pixel (histogram bin) of each chain's current state, in its tile. */
+__kernel void probe_chain_pixel(const Frame frame, STRATA_ARGS, __global const uint* state,
                                 const uint num_chains, __global uint* out) {
     uint c = get_global_id(0);
     if (c >= num_chains) return;
-    out[c] = eval_pixel(&frame, pss_load(state, c, num_chains, layout_film(0u)),
-                        pss_load(state, c, num_chains, layout_film(1u)));
+    MltStratum stratum = MLT_STRATUM(c);
+    out[c] = mlt_state_pixel(&frame, &stratum.tile, state, c, num_chains);
 }
 
 #ifndef PSS_FLOAT32
@@ -81,7 +83,7 @@ __kernel void probe_chain_pixel(const Frame frame, __global const uint* state,
 __kernel void probe_small_step(__global const uint* r, __global const uint* v, const uint bits,
                                const uint n, __global uint* out) {
     uint i = get_global_id(0);
-    if (i < n) out[i] = smp_perturb_bits(v[i], r[i], bits);
+    if (i < n) out[i] = smp_perturb_bits(v[i], r[i], bits, 1u);
 }
 
 /* Chain c (live bounces c % (depth + 1)) proposes with key rng_key(seed, c,
@@ -95,8 +97,9 @@ __kernel void probe_commit_agrees(__global uint* state, const uint num_chains, c
     uint c = get_global_id(0);
     if (c >= num_chains) return;
     uint dims = probe_dims(depth);
+    FilmTile unused = {0u, 0u, 1u, 1u, 0.0f, 0.0f, 1.0f, 1.0f}; /* no film point is read */
     SampleSource src = smp_chain(state, c, num_chains, rng_key(seed, c, 1u),
-                                 (c & 1u) ? SMP_LARGE : SMP_SMALL, c % (depth + 1u));
+                                 (c & 1u) ? SMP_LARGE : SMP_SMALL, c % (depth + 1u), unused);
     for (uint d = 0; d < dims; ++d) {
         LayoutSlot at = probe_slot(d);
         uint bounce =
@@ -137,6 +140,8 @@ __kernel void probe_burnin_film(const BurnInFilm film, const Frame frame, const 
     uint2 v = burnin_film(&film, &frame, first + i);
     out[3u * i] = v.x;
     out[3u * i + 1u] = v.y;
-    out[3u * i + 2u] = eval_pixel(&frame, layout_unit(v.x, LAYOUT_CAMERA_BITS),
-                                  layout_unit(v.y, LAYOUT_CAMERA_BITS));
+    FilmTile whole = strata_whole(&frame);
+    out[3u * i + 2u] = strata_point(&whole, &frame, layout_unit(v.x, LAYOUT_CAMERA_BITS),
+                                    layout_unit(v.y, LAYOUT_CAMERA_BITS))
+                           .pixel;
 }
