@@ -202,6 +202,9 @@ Image run_job(const std::vector<std::string>& rank_args, const std::string& out)
 //   ranks (sum_all), fixes one set of cells and weights: 4 cells from 4,096
 //   samples, where one rank's 2,048 would give 1 (2 ranks, whose sum is
 //   exact in either order);
+// - --strata 12: 4 tiles, 8 work-groups each rank deals by its own burn-in;
+//   the tiles' counts and sums add up over ranks, and B0 per tile is the
+//   union's (sum_all);
 // - PT (rank r renders samples r, r + R, ...): the per-pixel sums in the
 //   reals, the samples in the integers, with Sobol and random samples.
 TEST(MpiRender, RanksGiveTheImageOfTheirKeys) {
@@ -221,6 +224,10 @@ TEST(MpiRender, RanksGiveTheImageOfTheirKeys) {
         {{"scenes/furnace.scene --depth 4" + vote, "scenes/cornell-water.scene" + vote}, false},
         {ranks("scenes/cornell.scene" + film +
                    " --burn-in-iters 16 --split none --target two-stage",
+               2),
+         false},
+        {ranks("scenes/cornell-water.scene --width 24 --height 24 --threads 512 --spp 6 --seed 9 "
+               "--burn-in-iters 4 --split none --strata 12",
                2),
          false},
         {ranks(pt, 3), false},
