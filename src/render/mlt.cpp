@@ -136,8 +136,6 @@ double MltRenderer::b_rel_error() const {
 void MltRenderer::prepare(RankGroup& ranks) {
     Clock::time_point t0 = Clock::now();
     sample_starts(ranks);
-    kelemen_pb_.assign(grid_.count(), 0.0f);
-    kelemen_b0_.assign(grid_.count(), 0.0);
     if (kelemen_in_force(opt_)) {
         const double p = std::clamp(double(large_step_of(opt_)), 0.0, 1.0);
         const std::vector<double> b0 = burn_in_.ranks_b(ranks, grid_);
@@ -317,8 +315,6 @@ MltTally MltRenderer::mlt_tally() const {
         if (layers > 1) t.large_film[i] = words[at + 3 * FILM_LAYER_LARGE] << shift;
     }
     tile_counts(t);
-    t.burn_in_lum = burn_in_.sums().tile_lum;
-    t.burn_in_samples = burn_in_.sums().samples;
     t.burn_in_lum2 = burn_in_.sums().lum2;
     if (omc_) {
         Tally o = omc_->part().tally(); // spp, then sums per pixel and channel
@@ -356,6 +352,10 @@ void MltRenderer::tile_counts(MltTally& t) const {
 std::vector<double> MltRenderer::tile_b() const {
     MltTally t = MltTally::shaped(0, 1, false, grid_.count());
     tile_counts(t);
+    return tile_b_of(t);
+}
+
+std::vector<double> MltRenderer::tile_b_of(const MltTally& t) const {
     std::vector<double> b(grid_.count());
     for (std::uint32_t s = 0; s < grid_.count(); ++s)
         b[s] = mlt_tile_b(t.burn_in_lum[s], t.burn_in_samples, grid_.area(s, pixels()),
@@ -383,15 +383,12 @@ Image MltRenderer::image_of(const Tally& summed, bool mlt, bool omc) const {
     const std::size_t n = 3 * pixels();
     if (mlt) {
         // Per tile: B, and the film's unit in radiance per mutation.
-        std::vector<double> b(tiles, 0), unit(tiles, 0);
-        for (std::uint32_t s = 0; s < tiles; ++s) {
-            if (t.mutations[s] == 0) continue;
-            const double area = grid_.area(s, pixels());
-            b[s] =
-                mlt_tile_b(t.burn_in_lum[s], t.burn_in_samples, area, t.large_lum[s], t.large[s]);
-            unit[s] =
-                double(pixels()) * area / double(t.mutations[s]) / double(1u << FILM64_FRAC_BITS);
-        }
+        const std::vector<double> b = tile_b_of(t);
+        std::vector<double> unit(tiles, 0);
+        for (std::uint32_t s = 0; s < tiles; ++s)
+            if (t.mutations[s] > 0)
+                unit[s] = double(pixels()) * grid_.area(s, pixels()) / double(t.mutations[s]) /
+                          double(1u << FILM64_FRAC_BITS);
         const bool large = !t.large_film.empty();
         for (std::size_t i = 0; i < n; ++i) {
             const std::uint32_t s = grid_.pixel_tile[i / 3];

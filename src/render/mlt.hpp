@@ -163,6 +163,8 @@ class MltRenderer : public Integrator {
     // Adds each tile's mutations and large steps (from its work-groups' rows
     // of counters) and its burn-in sums to t.
     void tile_counts(MltTally& t) const;
+    // B per tile from a tally's sums (mlt_tile_b).
+    std::vector<double> tile_b_of(const MltTally& t) const;
     // Runs mlt_owed in `mode` (MLT_OWED_* of cl/kernels/mlt.cl).
     void owed(std::uint32_t mode) const;
     BEstimate b_estimate(const MltStats& s) const;

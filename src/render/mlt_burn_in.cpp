@@ -83,13 +83,14 @@ void MltBurnIn::run(RankGroup& ranks, const MemoryPlan& plan, const SceneBuffers
         std::vector<double> round_lum(tiles, 0.0);
         for (std::uint32_t i = 0; i < m; ++i) {
             const float y = host[i];
+            const std::uint64_t fixed = fixed_b_sample(y);
             const std::uint32_t pixel =
                 burn_in_film_sample(film, pixels, std::uint64_t(it) * film.per_round + i).first;
             const std::uint32_t t = sample_tile[i] = grid.pixel_tile[pixel];
-            s.tile_lum[t] += fixed_b_sample(y);
-            s.lum_fixed += fixed_b_sample(y);
+            s.tile_lum[t] += fixed;
+            s.lum_fixed += fixed;
             s.lum2 += double(y) * y;
-            round_lum[t] += double(fixed_b_sample(y));
+            round_lum[t] += double(fixed);
         }
         if (it == first && tiles > 1)
             strata.deal(strata_group_tiles(strata_groups(round_lum, groups), groups));
