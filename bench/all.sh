@@ -20,7 +20,7 @@ step() { echo "== $* ($(($(date +%s) - t0)) s)"; }
 if [ -n "${QUICK:-}" ]; then
     export REF_SECONDS=${REF_SECONDS:-2} THREADS=${THREADS:-1024}
     step error against time
-    SCENES="cornell cornell-water" SIZE=32 SECONDS=1 SEEDS=1 LOG_EVERY=0.25 \
+    SCENES="cornell cornell-water" SIZES="32 film" SECONDS=1 SEEDS=1 LOG_EVERY=0.25 \
         sh bench/error_time.sh "$BIN"
     step throughput against threads
     SIZE=32 SPP=4 MAX_THREADS=2048 sh bench/threads.sh "$BIN" 1

@@ -1,21 +1,26 @@
 #!/bin/sh
 # Error against time for every method on the scenes where they differ: one
-# render per (scene, method, seed) with a convergence log (render --log;
+# render per (scene, film size, method, seed) with a convergence log (render --log;
 # MSE, relative MSE, MSE without the directly visible lights (mse_unlit, by
 # the reference's mask) and MSE of 8x8 block means on linear RGB against a
 # long PT reference, measuring not counted as render time). Charts one
 # seed's MSE curves per scene (log-log) and prints, for each method and
 # metric, the time it needs to reach PT's final error, as a ratio of PT's
-# time (medians over the seeds; bench/time_to_error.awk).
+# time (medians over the seeds; bench/time_to_error.awk), and crops the
+# lower middle of the film from the reference and each method's first seed
+# side by side at full size (SCENE-WxH-crops.png).
+# Each scene at each of SIZES: N is an N x N film, `film` the scene's own
+# (512x512 for most); files are named SCENE-WxH.
 # Writes bench/results/error_time/. Usage: bench/error_time.sh [BIN]
-# Settings (environment): SCENES, SIZE, SECONDS, SEEDS, LOG_EVERY, THREADS, METHODS
-# (those of flags() below: -eF is --omc-effort F, -pP --large-step P,
-# mlt-strataN --strata N);
+# Settings (environment): SCENES, SIZES, SECONDS, SEEDS, LOG_EVERY, THREADS,
+# METHODS (those of flags() below: -eF is --omc-effort F, -pP --large-step P,
+# mlt-strataN --strata N), REF_SECONDS and REF_SECONDS_FILM (the references'
+# time at N x N and at the scene's film; bench/reference.sh);
 # PLOT_ONLY=1 redraws the charts and the table from the last run's CSVs.
 set -eu
 BIN=${1:-build/smallmlt}
-SCENES=${SCENES:-cornell cornell-water cornell-glass ajar}
-SIZE=${SIZE:-128}
+SCENES=${SCENES:-cornell cornell-water cornell-glass ajar cornell-glossy tiny-caustic}
+SIZES=${SIZES:-128 film}
 SECONDS_=${SECONDS:-30}
 SEEDS=${SEEDS:-1 2 3}
 LOG_EVERY=${LOG_EVERY:-0.5}
@@ -44,30 +49,40 @@ flags() {
     *) echo "error_time.sh: unknown method $1" >&2; exit 2 ;;
     esac
 }
-METHODS=${METHODS:-pt mlt-nosplit mlt-direct mlt mlt-k2 mlt-k4}
+METHODS=${METHODS:-pt mlt mlt-strata}
 
 echo "device: $("$BIN" devices | sed -n '1p'), cores: $(nproc)" | tee "$OUT/machine.txt"
-echo "scene,method,mse_ratio,rel_mse_ratio,mse_unlit_ratio,block8_mse_ratio,block32_mse_ratio,pt_seconds,target_mse" > "$OUT/time_to_error.csv"
+echo "scene,size,method,mse_ratio,rel_mse_ratio,mse_unlit_ratio,block8_mse_ratio,block32_mse_ratio,pt_seconds,target_mse" > "$OUT/time_to_error.csv"
 for scene in $SCENES; do
-    ref=$(sh bench/reference.sh "$BIN" "$scene" "$SIZE")
-    csv="$OUT/$scene.csv"
+for size in $SIZES; do
+    if [ "$size" = film ]; then
+        dims=$(awk '$1 == "film" { print $2 "x" $3 }' "scenes/$scene.scene")
+        size_flags=""
+        ref=$(REF_SECONDS=${REF_SECONDS_FILM:-${REF_SECONDS:-300}} sh bench/reference.sh "$BIN" "$scene" film)
+    else
+        dims=${size}x$size
+        size_flags="--width $size --height $size"
+        ref=$(sh bench/reference.sh "$BIN" "$scene" "$size")
+    fi
+    tag=$scene-$dims
+    csv="$OUT/$tag.csv"
     [ -n "${PLOT_ONLY:-}" ] || echo "method,seed,seconds,samples_per_pixel,samples,mse,rel_mse,mse_unlit,block8_mse,block32_mse" > "$csv"
     run_seeds=$SEEDS
     [ -z "${PLOT_ONLY:-}" ] || run_seeds=""
     for seed in $run_seeds; do
         for m in $METHODS; do
-            # shellcheck disable=SC2046
-            "$BIN" render "scenes/$scene.scene" $(flags "$m") --width "$SIZE" --height "$SIZE" \
+            # shellcheck disable=SC2046,SC2086
+            "$BIN" render "scenes/$scene.scene" $(flags "$m") $size_flags \
                 --time "$SECONDS_" --seed "$seed" --quiet --reference "$ref" \
-                --reference-mask "${ref%.pfm}-mask.pfm" --log "$OUT/log.csv" --log-every "$LOG_EVERY" --out "$OUT/$scene-$m-s$seed.png"
+                --reference-mask "${ref%.pfm}-mask.pfm" --log "$OUT/log.csv" --log-every "$LOG_EVERY" --out "$OUT/$tag-$m-s$seed.png"
             tail -n +2 "$OUT/log.csv" | sed "s/^/$m,$seed,/" >> "$csv"
         done
     done
     rm -f "$OUT/log.csv"
     first=$(echo "$SEEDS" | awk '{print $1}')
-    awk -F, -v s="$first" 'NR == 1 || $2 == s' "$csv" | cut -d, -f1,3,6 > "$OUT/$scene-seed$first.csv"
-    sh bench/plot_error.sh "$OUT/$scene-seed$first.csv" "$OUT/$scene.png" \
-        "$scene ${SIZE}x$SIZE, seed $first (reference: PT, $(sed -n 's/.* \([0-9]* spp\).*/\1/p' "${ref%.pfm}.txt"))" \
+    awk -F, -v s="$first" 'NR == 1 || $2 == s' "$csv" | cut -d, -f1,3,6 > "$OUT/$tag-seed$first.csv"
+    sh bench/plot_error.sh "$OUT/$tag-seed$first.csv" "$OUT/$tag.png" \
+        "$scene $dims, seed $first (reference: PT, $(sed -n 's/.* \([0-9]* spp\).*/\1/p' "${ref%.pfm}.txt"))" \
         "pt=PT" "mlt-none=MLT, no burn-in, no split, large step 0.5" \
         "mlt-nosplit=MLT, OMC burn-in, no split" "mlt-visible=MLT, split visible" \
         "mlt-direct=MLT, split direct" "mlt=MLT, split auto (default)" \
@@ -75,11 +90,31 @@ for scene in $SCENES; do
         "mlt-kelemen=MLT, split auto, Kelemen weights" \
         "mlt-kelemen-p0.3=MLT, Kelemen weights, large step 0.3" \
         "mlt-k2=split-transition K = 2" "mlt-k4=split-transition K = 4" \
-        "mlt-strata=MLT, split auto, strata auto" "mlt-strata8=MLT, split auto, strata of 8"
-    awk -F, -v scene="$scene" -f bench/median.awk -f bench/time_to_error.awk "$csv" >> "$OUT/time_to_error.csv"
+        "mlt-strata=MLT, split auto, strata auto" "mlt-strata8=MLT, split auto, strata of 8" \
+        "mlt-strata32=MLT, split auto, strata of 32"
+    # the lower middle of the film at full size (cornell-water's floor under
+    # the water): the reference and each method at equal time, seed $first
+    w=${dims%x*} h=${dims#*x}
+    {
+        echo "set terminal pngcairo size $((($(echo "$METHODS" | wc -w) + 1) * (w / 2 + 24))),$((h / 2 + 40)) font ',10'"
+        echo "set output '$OUT/$tag-crops.png'"
+        echo "set multiplot layout 1,$(($(echo "$METHODS" | wc -w) + 1))"
+        echo "unset border; unset tics; unset key; set size ratio -1"
+        echo "set lmargin 1; set rmargin 1; set bmargin 0; set tmargin 2"
+        echo "set xrange [$((w / 4)):$((3 * w / 4))]; set yrange [0:$((h / 2))]"
+        echo "set title 'reference (PT)'"
+        echo "plot '${ref%.pfm}.png' binary filetype=png with rgbimage"
+        for m in $METHODS; do
+            echo "set title '$m, $SECONDS_ s'"
+            echo "plot '$OUT/$tag-$m-s$first.png' binary filetype=png with rgbimage"
+        done
+        echo "unset multiplot"
+    } | gnuplot
+    awk -F, -v scene="$scene,$dims" -f bench/median.awk -f bench/time_to_error.awk "$csv" >> "$OUT/time_to_error.csv"
+done
 done
 echo
-echo "time to reach the error every PT render reached at $SECONDS_ s, by each metric, ${SIZE}x$SIZE,"
+echo "time to reach the error every PT render reached at $SECONDS_ s, by each metric,"
 echo "as a ratio of PT's time, medians over seeds ($SEEDS); pt_seconds and target_mse: by MSE;"
 echo "ratio < 1: faster than PT; * = not reached, extrapolated as error ~ 1/t from the last row"
 column -s, -t "$OUT/time_to_error.csv"

@@ -13,6 +13,7 @@
 # metric that some row leaves empty (mse_unlit without --reference-mask)
 # has an empty ratio.
 # Usage: awk -F, -v scene=NAME -f median.awk -f time_to_error.awk CSV
+# (NAME may be several fields: bench/error_time.sh passes SCENE,WxH)
 BEGIN { nmetrics = split("6 7 8 9 10", column, " ") }
 NR == 1 { next }
 {

@@ -48,16 +48,18 @@ rows() { [ "$(tail -n +2 "$1" | wc -l)" -eq "$2" ]; }
 png() { [ "$(head -c 4 "$1" | tail -c 3)" = PNG ]; }
 
 truth time_to_error_rows rows "$R/error_time/time_to_error.csv" 12
-truth time_to_error_header [ "$(head -n 1 "$R/error_time/time_to_error.csv")" = "scene,method,mse_ratio,rel_mse_ratio,mse_unlit_ratio,block8_mse_ratio,block32_mse_ratio,pt_seconds,target_mse" ]
-truth time_to_error_pt_is_1 awk -F, 'NR > 1 && $2 == "pt" && $3 $4 $5 $6 $7 != "1.0001.0001.0001.0001.000" {exit 1}' "$R/error_time/time_to_error.csv"
-truth time_to_error_numbers awk -F, 'NR > 1 && !($3 + 0 > 0 && $4 + 0 > 0 && $5 + 0 > 0 && $6 + 0 > 0 && $7 + 0 > 0 && $8 + 0 > 0 && $9 + 0 > 0) {exit 1}' "$R/error_time/time_to_error.csv"
+truth time_to_error_header [ "$(head -n 1 "$R/error_time/time_to_error.csv")" = "scene,size,method,mse_ratio,rel_mse_ratio,mse_unlit_ratio,block8_mse_ratio,block32_mse_ratio,pt_seconds,target_mse" ]
+truth time_to_error_pt_is_1 awk -F, 'NR > 1 && $3 == "pt" && $4 $5 $6 $7 $8 != "1.0001.0001.0001.0001.000" {exit 1}' "$R/error_time/time_to_error.csv"
+truth time_to_error_numbers awk -F, 'NR > 1 && !($4 + 0 > 0 && $5 + 0 > 0 && $6 + 0 > 0 && $7 + 0 > 0 && $8 + 0 > 0 && $9 + 0 > 0 && $10 + 0 > 0) {exit 1}' "$R/error_time/time_to_error.csv"
+# each scene at 32x32 and at its own film (512x512)
+truth time_to_error_sizes [ "$(cut -d, -f2 "$R/error_time/time_to_error.csv" | tail -n +2 | sort -u | tr '\n' ' ')" = "32x32 512x512 " ]
 truth stuck_time_to_error_numbers awk -F, '!($3 + 0 > 0 && $4 + 0 > 0 && $5 + 0 > 0 && $6 + 0 > 0 && $7 + 0 > 0) {exit 1}' "$R/stuck/time_to_error.csv"
 # masks: every cached reference has its mask beside it
 masks() { for f in "$DIR"/cache/*s.pfm; do [ -s "${f%.pfm}-mask.pfm" ] || return 1; done; }
 truth reference_masks masks
-for scene in cornell cornell-water; do
-    truth "log_methods_$scene" [ "$(cut -d, -f1 "$R/error_time/$scene.csv" | tail -n +2 | sort -u | tr '\n' ' ')" = "mlt mlt-direct mlt-k2 mlt-k4 mlt-nosplit pt " ]
-    truth "chart_$scene" png "$R/error_time/$scene.png"
+for tag in cornell-32x32 cornell-water-32x32 cornell-512x512 cornell-water-512x512; do
+    truth "log_methods_$tag" [ "$(cut -d, -f1 "$R/error_time/$tag.csv" | tail -n +2 | sort -u | tr '\n' ' ')" = "mlt mlt-strata pt " ]
+    truth "chart_$tag" png "$R/error_time/$tag.png"
 done
 truth threads_rows rows "$R/threads/threads.csv" 4
 truth memory_rows rows "$R/memory/k1.csv" 24
