@@ -250,3 +250,47 @@ TEST(SmallStep, LazyPathEqualsCommittedPath) {
         EXPECT_GT(lit, int(opt.threads) / 10) << "too few lit paths to test anything";
     }
 }
+
+namespace {
+
+// The stretch of the film numbers' small step (probe_film_stretch) in each
+// tile of `grids`, x then y, for --film-step `film_step`.
+std::vector<cl_uint> film_stretch(std::uint32_t film_step, const std::vector<StrataGrid>& grids) {
+    DeviceScene ds = test::layout_only_scene(features(1));
+    MltOptions opt = test::plain_mlt();
+    MltTestHooks hooks;
+    opt.threads = 64;
+    opt.film_step = film_step;
+    hooks.extra_files = {kProbeFile};
+    MltRenderer mlt(test::cl(), ds, opt, hooks);
+    std::vector<FilmTile> tiles;
+    for (const StrataGrid& g : grids)
+        tiles.push_back(g.tiles.front());
+    ClBuffer tb(test::cl(), CL_MEM_READ_ONLY, tiles.size() * sizeof(FilmTile), tiles.data());
+    ClBuffer out(test::cl(), CL_MEM_WRITE_ONLY, tiles.size() * 8);
+    ClKernel k(MltInspect::program(mlt), "probe_film_stretch");
+    k.set_args(tb, cl_uint(tiles.size()), out);
+    k.run(test::cl(), tiles.size());
+    std::vector<cl_uint> s(2 * tiles.size());
+    out.read(test::cl(), s.data());
+    return s;
+}
+
+} // namespace
+
+// A film number's largest small step is 2^-6 of its unit square times the
+// stretch, so stretch * n / 64 pixels in a tile of n pixels. Without
+// --film-step it is a 64th of the film, in a tile as on the whole film; with
+// it, the step asked for in pixels, rounded to a multiple of n / 64 (at
+// least one). Grids: whole films of 128x128, 512x512 and 160x90, and the
+// first tile of 16 pixels of a 128x128 film.
+TEST(SmallStep, FilmStepIsAFilmsSixtyFourthOrTheAskedPixels) {
+    const std::vector<StrataGrid> grids = {strata_grid(128, 128, 0), strata_grid(512, 512, 0),
+                                           strata_grid(160, 90, 0), strata_grid(128, 128, 16)};
+    EXPECT_EQ(film_stretch(0, grids), (std::vector<cl_uint>{1, 1, 1, 1, 1, 1, 8, 8}));
+    // 8 pixels: 8 * 64 / n, rounded: 4 on 128, 1 on 512, 3.2 and 5.7 on
+    // 160x90, 32 in a tile of 16.
+    EXPECT_EQ(film_stretch(8, grids), (std::vector<cl_uint>{4, 4, 1, 1, 3, 6, 32, 32}));
+    // 2 pixels on 512: less than one stretch (8 pixels); one it is.
+    EXPECT_EQ(film_stretch(2, grids), (std::vector<cl_uint>{1, 1, 1, 1, 1, 1, 8, 8}));
+}

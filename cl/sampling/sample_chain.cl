@@ -73,11 +73,19 @@ inline uint smp_small_delta(uint r, uint bits) {
     return max((uint)((p + (1ul << (shift - 1u))) >> shift), 1u);
 }
 
-/* How many times longer a film number's small step is in a tile than on
- * the whole film: the film over the tile, rounded (1 on the whole film), so
- * that a step moves about as many pixels in a tile as on the film. */
+/* How many times longer a film number's small step is than another
+ * number's, whose largest is 2^-6 of its unit square (the tile's n pixels
+ * along the axis). Without MLT_FILM_STEP: the film over the tile, rounded
+ * (1 on the whole film), so that a step moves as many pixels in a tile as
+ * on the film, at most a 64th of the film. With it: at most MLT_FILM_STEP
+ * pixels, rounded to a multiple of n / 64 pixels (at least one). */
 inline uint smp_film_stretch(const SampleSource* s, uint dim) {
+#ifdef MLT_FILM_STEP
+    uint n = dim ? s->tile.h : s->tile.w;
+    return max((MLT_FILM_STEP * 64u + n / 2u) / n, 1u);
+#else
     return (uint)(1.0f / (dim ? s->tile.sy : s->tile.sx) + 0.5f);
+#endif
 }
 
 #ifndef PSS_FLOAT32

@@ -26,6 +26,7 @@ std::string program_defines(const ClContext& cl, const DeviceScene& ds, const Ml
     if (opt.split != Split::None || opt.target == Target::TwoStage)
         d += "#define MLT_BURN_IN_SAMPLES 1\n";
     if (opt.film_atomics64) d += "#define FILM_ATOMICS64 1\n";
+    if (opt.film_step) d += "#define MLT_FILM_STEP " + std::to_string(opt.film_step) + "u\n";
     return d + split_defines(opt.split);
 }
 

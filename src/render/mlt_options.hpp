@@ -20,6 +20,7 @@ constexpr bool kDefaultKelemen = true;
 constexpr float kDefaultLargeStepKelemen = 0.3f;  // with burn-in and Kelemen's weights
 constexpr float kDefaultLargeStepBurnIn = 0.1f;   // with burn-in and expected values
 constexpr float kDefaultLargeStepNoBurnIn = 0.5f; // the paper's baseline without
+constexpr std::uint32_t kDefaultFilmStep = 0;     // a 64th of the film
 
 // What tests change in an MLT render besides its options, passed to the
 // renderer apart from them (the command line never sets these): reference
@@ -80,6 +81,9 @@ struct MltOptions {
     // Stratified MLT (src/render/strata.hpp): the tiles' side in pixels, 0
     // for none (one tile, the whole film), kStrataAuto for the rule's.
     std::uint32_t strata = 0;
+    // The largest small step of the film numbers, in pixels (0: a 64th of
+    // the film, Kelemen's 2^-6 of the unit square; cl/sampling/sample_chain.cl).
+    std::uint32_t film_step = kDefaultFilmStep;
 };
 
 // The large step's probability where none is given: it depends on burn-in

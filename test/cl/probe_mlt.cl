@@ -86,6 +86,17 @@ __kernel void probe_small_step(__global const uint* r, __global const uint* v, c
     if (i < n) out[i] = smp_perturb_bits(v[i], r[i], bits, 1u);
 }
 
+/* The stretch of a film number's small step (x, then y) in each of n tiles. */
+__kernel void probe_film_stretch(__global const FilmTile* tiles, const uint n,
+                                 __global uint* out) {
+    uint i = get_global_id(0);
+    if (i >= n) return;
+    SampleSource s;
+    s.tile = tiles[i];
+    out[2u * i] = smp_film_stretch(&s, 0u);
+    out[2u * i + 1u] = smp_film_stretch(&s, 1u);
+}
+
 /* Chain c (live bounces c % (depth + 1)) proposes with key rng_key(seed, c,
  * 1), a small step for even c, a large one for odd c: lazy[c * dims + d] is
  * number d as the path reads it, times 2^bits; then the proposal is committed
