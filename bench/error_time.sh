@@ -97,11 +97,11 @@ for size in $SIZES; do
         "mlt-fs16=MLT, film steps of 16 pixels"
     # the lower middle of the film at full size (cornell-water's floor under
     # the water): the reference and each method at equal time, seed $first
-    w=${dims%x*} h=${dims#*x}
+    w=${dims%x*} h=${dims#*x} panels=$(($(echo "$METHODS" | wc -w) + 1))
     {
-        echo "set terminal pngcairo size $((($(echo "$METHODS" | wc -w) + 1) * (w / 2 + 24))),$((h / 2 + 40)) font ',10'"
+        echo "set terminal pngcairo size $((panels * (w / 2 + 24))),$((h / 2 + 40)) font ',10'"
         echo "set output '$OUT/$tag-crops.png'"
-        echo "set multiplot layout 1,$(($(echo "$METHODS" | wc -w) + 1))"
+        echo "set multiplot layout 1,$panels"
         echo "unset border; unset tics; unset key; set size ratio -1"
         echo "set lmargin 1; set rmargin 1; set bmargin 0; set tmargin 2"
         echo "set xrange [$((w / 4)):$((3 * w / 4))]; set yrange [0:$((h / 2))]"
