@@ -9,8 +9,9 @@
  * gives it. The normalization b = E[I] is their mean. With MLT_BURN_IN_SAMPLES (a split,
  * or the two-stage target) the path's parts go to omc[2 i] (xyz: the OMC
  * part, RGB; w: the pixel's bits) and omc[2 i + 1] (xyz: the MLT part; w:
- * the rays traced), so that the burn-in's paths also render the OMC part,
- * and the host can tell how well path tracing renders the MLT part
+ * its light behind smooth transmitters, cl/path/path.cl), so that the
+ * burn-in's paths also render the OMC part, and the host can tell how well
+ * path tracing renders the MLT part
  * (src/render/split.hpp) and weigh the two-stage target's cells
  * (src/render/target.hpp). The host adds them in sample order: no atomics,
  * and the same sums every time. */
@@ -32,7 +33,7 @@ __kernel void mlt_luminance(SCENE_ARGS, __global const float* weight, const Targ
         lum[i] = path_luminance(s.f) * mlt_weight(&target, s.pixel);
 #ifdef MLT_BURN_IN_SAMPLES
         omc[2u * i] = (float4)(s.omc, as_float(s.pixel));
-        omc[2u * i + 1u] = (float4)(s.f, (float)s.rays);
+        omc[2u * i + 1u] = (float4)(s.f, s.behind_specular);
 #endif
     }
     mlt_publish_nonfinite(stats, l_count, nonfinite);

@@ -9,6 +9,7 @@ inline EvalResult eval_state(const SceneView* sc, const Frame* frame, SampleSour
     EvalResult s;
     s.f = r.rest;
     s.omc = r.omc;
+    s.behind_specular = r.behind_specular;
     s.pixel = at.pixel;
     s.bounces = r.bounces;
     s.rays = r.rays;

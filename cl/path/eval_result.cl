@@ -2,10 +2,11 @@
  * (eval_path.cl, eval_target.cl). */
 
 typedef struct {
-    float3 f;     /* F: RGB contribution (the MLT part) */
-    float3 omc;   /* the OMC part of the split, RGB (0 without one) */
-    uint pixel;   /* where it splats */
-    uint bounces; /* live bounces of the state (PathResult.bounces) */
+    float3 f;              /* F: RGB contribution (the MLT part) */
+    float3 omc;            /* the OMC part of the split, RGB (0 without one) */
+    float behind_specular; /* PathResult.behind_specular (0 for other evaluators) */
+    uint pixel;            /* where it splats */
+    uint bounces;          /* live bounces of the state (PathResult.bounces) */
     uint rays;
 } EvalResult;
 
@@ -14,6 +15,7 @@ inline EvalResult eval_nothing(void) {
     EvalResult s;
     s.f = (float3)(0.0f);
     s.omc = (float3)(0.0f);
+    s.behind_specular = 0.0f;
     s.pixel = 0u;
     s.bounces = 0u;
     s.rays = 0u;

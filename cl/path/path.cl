@@ -35,8 +35,13 @@ typedef struct {
 } SceneView;
 
 typedef struct {
-    float3 omc;   /* terms with L < PATH_SPLIT: the OMC part, RGB */
-    float3 rest;  /* the other terms: the MLT part F(x), RGB */
+    float3 omc;  /* terms with L < PATH_SPLIT: the OMC part, RGB */
+    float3 rest; /* the other terms: the MLT part F(x), RGB */
+    /* Luminance of the MLT part's next-event estimates that a smooth
+     * transmitter (glass, water) blocked, valued as if it had let the
+     * shadow ray through: light that reaches those vertices only through a
+     * Dirac lobe, which path tracing finds only by hitting the light. */
+    float behind_specular;
     uint rays;    /* rays traced: closest-hit and shadow */
     uint bounces; /* surface vertices that scattered (read their bounce's numbers) */
 } PathResult;
@@ -121,29 +126,44 @@ inline void path_pass(Ray* ray, float t, float3 ng) {
     ray->o = o;
 }
 
-/* Whether nothing blocks the shadow ray: with cut-outs, a hole lets it
- * through (at most PATH_MAX_HOLES of them). */
-inline bool path_unoccluded(const SceneView* sc, Ray shadow, uint* rays) {
+/* What a shadow ray meets. */
+#define PATH_LIT 0u             /* nothing: the light is seen */
+#define PATH_SHADOWED 1u        /* a surface */
+#define PATH_BEHIND_SPECULAR 2u /* a smooth transmitter (no lobe for NEE, not opaque) */
+
+inline uint path_blocker(const Material* m) {
+    return !shading_has_nee(m) && !shading_opaque(m) ? PATH_BEHIND_SPECULAR : PATH_SHADOWED;
+}
+
+/* What blocks the shadow ray, if anything: with cut-outs, a hole lets it
+ * through (at most PATH_MAX_HOLES of them); without, the blocker is any
+ * surface on the ray, not necessarily the first. */
+inline uint path_shadow(const SceneView* sc, Ray shadow, uint* rays) {
     Hit h;
+    Material m;
 #if LAYOUT_HAS_CUTOUTS
     for (uint i = 0; i <= PATH_MAX_HOLES; ++i) {
         ++*rays;
-        if (!bvh_trace(sc->nodes, sc->tris, &shadow, &h, false)) return true;
-        Material m;
+        if (!bvh_trace(sc->nodes, sc->tris, &shadow, &h, false)) return PATH_LIT;
         ShadingFrame f;
-        if (path_surface(sc, &shadow, &h, &m, &f)) return false;
+        if (path_surface(sc, &shadow, &h, &m, &f)) return path_blocker(&m);
         path_pass(&shadow, h.t, normalize(geo_tri_normal(&sc->tris[h.tri])));
     }
-    return false;
+    return PATH_SHADOWED;
 #else
     ++*rays;
-    return !bvh_trace(sc->nodes, sc->tris, &shadow, &h, true);
+    if (!bvh_trace(sc->nodes, sc->tris, &shadow, &h, true)) return PATH_LIT;
+    m = sc->mats[sc->tris[h.tri].material];
+    return path_blocker(&m);
 #endif
 }
 
-/* Direct light at vertex x seen from wo, at material m of shading frame f. */
+/* Direct light at vertex x seen from wo, at material m of shading frame f.
+ * Where a smooth transmitter blocks it, *behind is what it would have been
+ * without that surface and without MIS (the light's whole direct estimate);
+ * otherwise *behind is left as it is. */
 float3 path_next_event(const SceneView* sc, SampleSource* src, uint bounce, float3 x, float3 wo,
-                       const ShadingFrame* f, const Material* m, uint* rays) {
+                       const ShadingFrame* f, const Material* m, uint* rays, float3* behind) {
 #if LAYOUT_HAS_NEE
     uint pick = 0;
 #if SLOT_LIGHT_PICK >= 0
@@ -170,7 +190,9 @@ float3 path_next_event(const SceneView* sc, SampleSource* src, uint bounce, floa
     float reach = length(to_light);
     shadow.d = to_light / reach;
     shadow.tmax = reach * (1.0f - 1e-4f);
-    if (!path_unoccluded(sc, shadow, rays)) return (float3)(0.0f);
+    uint blocker = path_shadow(sc, shadow, rays);
+    if (blocker == PATH_BEHIND_SPECULAR) *behind = ls.radiance * e.f_cos / ls.pdf_w;
+    if (blocker != PATH_LIT) return (float3)(0.0f);
     float w = light_power_heuristic(ls.pdf_w, e.pdf_w);
     return ls.radiance * e.f_cos * (w / ls.pdf_w);
 #else
@@ -223,6 +245,7 @@ PathResult path_trace(const SceneView* sc, SampleSource* src, Ray ray) {
     PathResult res;
     res.omc = (float3)(0.0f);
     res.rest = (float3)(0.0f);
+    res.behind_specular = 0.0f;
     res.rays = 0;
     res.bounces = 0;
     float3 beta = (float3)(1.0f);
@@ -251,9 +274,12 @@ PathResult path_trace(const SceneView* sc, SampleSource* src, Ray ray) {
         if (bounce >= sc->depth) break;
         res.bounces = bounce + 1u;
         float3 x = ray.o + ray.d * hit.t;
-        if (shading_has_nee(&m))
+        if (shading_has_nee(&m)) {
+            float3 behind = (float3)(0.0f);
             path_add(&res, bounce + 1u,
-                     beta * path_next_event(sc, src, bounce, x, wo, &f, &m, &res.rays));
+                     beta * path_next_event(sc, src, bounce, x, wo, &f, &m, &res.rays, &behind));
+            if (bounce + 1u >= PATH_SPLIT) res.behind_specular += path_luminance(beta * behind);
+        }
         BsdfSample bs = shading_sample(src, bounce, &m, &f, wo);
         beta *= bs.weight;
         prev_pdf_w = bs.pdf_w;

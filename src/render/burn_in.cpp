@@ -133,7 +133,15 @@ void BurnInParts::add(const std::vector<float>& samples) {
         double yr = rgb_luminance(samples[i + 4], samples[i + 5], samples[i + 6]);
         omc_y2[pixel] += yo * yo;
         rest_y2[pixel] += yr * yr;
+        behind_specular += samples[i + 7];
     }
+}
+
+double BurnInParts::behind_specular_share() const {
+    const double samples = double(std::accumulate(count.begin(), count.end(), std::uint64_t(0)));
+    if (!(samples > 0)) return 0;
+    const double s = behind_specular / samples, b = mean(rest);
+    return s + b > 0 ? s / (s + b) : 0;
 }
 
 double BurnInParts::mean(const std::vector<double>& sums) const {

@@ -105,6 +105,7 @@ struct BurnInParts {
     std::vector<double> omc, rest;       // per pixel and channel
     std::vector<double> omc_y2, rest_y2; // per pixel: sums of squared luminances
     std::vector<std::uint64_t> count;    // per pixel
+    double behind_specular = 0; // sum of the paths' light behind smooth transmitters (path.cl)
     explicit BurnInParts(std::uint64_t pixels = 0)
         : omc(3 * pixels, 0.0), rest(3 * pixels, 0.0), omc_y2(pixels, 0.0), rest_y2(pixels, 0.0),
           count(pixels, 0) {}
@@ -122,6 +123,10 @@ struct BurnInParts {
     double variance(const std::vector<double>& sums, const std::vector<double>& y2) const;
     // A part's mean luminance per path, from its sums per pixel (`sums`, RGB).
     double mean(const std::vector<double>& sums) const;
+    // The share of the MLT part's light, found or behind smooth
+    // transmitters, that lay behind them: s / (s + b_m), s and b_m the
+    // means of behind_specular and of the MLT part (0 where both are 0).
+    double behind_specular_share() const;
 };
 
 } // namespace smallmlt

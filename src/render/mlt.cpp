@@ -147,7 +147,7 @@ void MltRenderer::prepare(RankGroup& ranks) {
         strata_.set_kelemen_pb(kelemen_pb_);
     }
     if (split_ == Split::Auto) {
-        bool pay = ranks.all(chains_pay(mlt_relative_variance()));
+        bool pay = ranks.all(chains_pay(mlt_relative_variance(), behind_specular_share()));
         split_ = pay ? kChainsSplit : Split::All;
         if (!pay) {
             omc_.reset(); // its buffers first, so the memory plan's peak holds
@@ -274,6 +274,7 @@ MltReport MltRenderer::report() const {
     r.omc_spp = omc_spp();
     r.omc_rate = omc_rate();
     r.mlt_relative_variance = omc_ ? mlt_relative_variance() : 0;
+    r.behind_specular_share = omc_ ? behind_specular_share() : 0;
     r.kelemen = opt_.kelemen;
     r.strata = grid_.count();
     if (!kelemen_pb_.empty()) {

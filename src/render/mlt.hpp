@@ -114,8 +114,9 @@ class MltRenderer : public Integrator {
     std::uint32_t omc_spp() const { return omc_ ? omc_->part().spp() : 0; }
     // The split in force: opt.split, with Auto decided by prepare().
     Split split() const { return split_; }
-    // r of chains_pay (src/render/split.hpp), from the burn-in.
+    // r and s of chains_pay (src/render/split.hpp), from the burn-in.
     double mlt_relative_variance() const;
+    double behind_specular_share() const { return burn_in_.parts().behind_specular_share(); }
     const MltFilm& film() const { return film_; }
     // The strata: the tiles, and the tile of each work-group of chains.
     const StrataGrid& strata_grid() const { return grid_; }

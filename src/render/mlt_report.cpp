@@ -16,6 +16,18 @@ std::vector<std::string> mlt_notes(const MltReport& r) {
                       "variance is below " +
                       std::to_string(int(kChainsPayRatio)) +
                       "), so no chain ran: --split visible runs them anyway");
+    if (r.prepared && r.split != Split::All && r.omc_part &&
+        r.mlt_relative_variance <= kChainsPayRatio &&
+        r.behind_specular_share > kChainsPayBehindShare) {
+        char buf[400];
+        std::snprintf(buf, sizeof buf,
+                      "%.0f%% of the light the burn-in's paths aimed at lay behind glass or "
+                      "water, which path tracing finds only by hitting the light, and its paths "
+                      "found little of it: b = %.5g may leave that light out, and the chains' "
+                      "part of the image is then too dark until large steps find it",
+                      100.0 * r.behind_specular_share, r.b);
+        out.push_back(buf);
+    }
     if (r.prepared && !r.burn_in_lit && !r.finished)
         out.push_back("no OMC sample of the burn-in carried light in the MLT part (b = 0): the "
                       "chains had nothing to render, and the time went to the OMC part");
@@ -71,9 +83,10 @@ std::string mlt_summary(const MltReport& r) {
     if (r.omc_part) {
         std::snprintf(buf, sizeof buf,
                       "; split %s%s: OMC part %u spp + %.1f from burn-in (%.3g spp per step), "
-                      "MLT part's relative variance %.3g",
+                      "MLT part's relative variance %.3g, %.3g%% of its light behind glass",
                       split_name(r.split), r.split_asked == Split::Auto ? " (auto)" : "", r.omc_spp,
-                      r.burn_in_spp, r.omc_rate, r.mlt_relative_variance);
+                      r.burn_in_spp, r.omc_rate, r.mlt_relative_variance,
+                      100.0 * r.behind_specular_share);
         out += buf;
     }
     if (r.kelemen && r.steps > 0) {

@@ -27,7 +27,7 @@ struct MltReport {
     double prepare_seconds = 0, step_seconds = 0; // b and chain start; steps
     bool omc_part = false;                        // a split's OMC part
     std::uint32_t omc_spp = 0;
-    double omc_rate = 0, mlt_relative_variance = 0;
+    double omc_rate = 0, mlt_relative_variance = 0, behind_specular_share = 0;
     bool kelemen = false;
     float kelemen_pb = 0;
     std::uint32_t strata = 1; // tiles of stratified MLT
@@ -39,7 +39,8 @@ struct MltReport {
 // split's and the weights' figures.
 std::string mlt_summary(const MltReport& r);
 // What the user should know: dropped samples, a split that ran no chain, an
-// unlit burn-in, an uncertain b, stuck chains, no step in the time given.
+// unlit burn-in, light behind glass the burn-in missed, an uncertain b,
+// stuck chains, no step in the time given.
 std::vector<std::string> mlt_notes(const MltReport& r);
 
 } // namespace smallmlt

@@ -66,8 +66,8 @@ double mlt_part_relative_variance(double mlt_variance, double b, double pixels) 
     return b > 0 && pixels > 0 ? mlt_variance / (pixels * b * b) : 0;
 }
 
-bool chains_pay(double relative_variance) {
-    return relative_variance > kChainsPayRatio;
+bool chains_pay(double relative_variance, double behind_specular_share) {
+    return relative_variance > kChainsPayRatio || behind_specular_share > kChainsPayBehindShare;
 }
 
 } // namespace smallmlt

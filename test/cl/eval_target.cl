@@ -95,6 +95,7 @@ inline EvalResult eval_state(const SceneView* sc, const Frame* frame, SampleSour
     s.omc = (float3)(0.0f);
     s.pixel = at.pixel;
     s.bounces = bounces;
+    s.behind_specular = 0.0f;
     s.rays = 0u;
     return s;
 }
