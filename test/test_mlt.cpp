@@ -251,7 +251,7 @@ TEST(MltStrata, ChainsStayInTheirTilesFollowTheTargetAndEachTileHasItsB) {
 // its mean plus 3.3 standard deviations (about 0.001 one-sided), and bins
 // where the target is zero get exactly nothing.
 void check_splat_image(Target target, bool kelemen = false, double b0_scale = 1,
-                       std::uint32_t strata = 0) {
+                       std::uint32_t strata = 0, std::uint32_t restart = 0) {
     const int bins = 16, replicas = 16;
     DeviceScene ds = test::layout_only_scene({}, bins, bins);
     std::vector<double> sum(bins * bins, 0.0), sum2(bins * bins, 0.0);
@@ -267,7 +267,9 @@ void check_splat_image(Target target, bool kelemen = false, double b0_scale = 1,
         opt.target = target;
         opt.kelemen = kelemen;
         opt.strata = strata;
-        if (strata) opt.threads = 2048; // 32 work-groups: 16 dealt by brightness
+        opt.restart = restart;
+        if (restart) opt.burn_in_iters = 4; // b also from every restart's rounds
+        if (strata) opt.threads = 2048;     // 32 work-groups: 16 dealt by brightness
         MltRenderer mlt(test::cl(), ds, opt, hooks);
         mlt.prepare();
         mlt.step(400);
@@ -340,6 +342,21 @@ TEST(MltSplat, StratifiedKelemenImageMatchesTheTarget) {
     check_splat_image(Target::Luminance, true, 1, 4);
 }
 
+// --restart (MltBurnIn::restart): every 4 of the 400 steps each chain
+// splats what it owes and starts again at a pick of 4 fresh burn-in rounds,
+// whose samples also count in b (400K of them over the render); the image
+// is the same, with Kelemen's weights (the default) and with expected
+// values, and in tiles. So short a chain owes a good part of its weight
+// when it restarts: a restart that dropped it would darken every bin.
+TEST(MltSplat, RestartedImageMatchesTheTarget) {
+    check_splat_image(Target::Luminance, false, 1, 0, 4);
+    check_splat_image(Target::Luminance, true, 1, 0, 4);
+}
+
+TEST(MltSplat, RestartedStratifiedImageMatchesTheTarget) {
+    check_splat_image(Target::Luminance, true, 1, 4, 4);
+}
+
 // MLT renders against PT, block by block, and b against PT's mean:
 // test_render_blocks.cpp.
 
@@ -394,19 +411,22 @@ TEST(MltPrecision, PackedAndFloat32StatesAgreeWithinNoise) {
 // in which work-items finish; the film is drained every 2 steps here.
 TEST(MltDeterminism, SameSeedSameImage) {
     DeviceScene ds = prepare_scene(test::scene("cornell-glass", 24, 24));
-    std::vector<float> images[2];
-    for (auto& img : images) {
-        MltOptions opt = test::plain_mlt();
-        opt.threads = 2048;
-        opt.film_pass_mutations = 4096;
-        opt.seed = 77;
-        opt.burn_in_iters = 8;
-        MltRenderer mlt(test::cl(), ds, opt);
-        mlt.prepare();
-        mlt.step(16);
-        img = mlt.image().rgb;
+    for (std::uint32_t restart : {0u, 4u}) {
+        std::vector<float> images[2];
+        for (auto& img : images) {
+            MltOptions opt = test::plain_mlt();
+            opt.threads = 2048;
+            opt.film_pass_mutations = 4096;
+            opt.seed = 77;
+            opt.burn_in_iters = 8;
+            opt.restart = restart;
+            MltRenderer mlt(test::cl(), ds, opt);
+            mlt.prepare();
+            mlt.step(16);
+            img = mlt.image().rgb;
+        }
+        EXPECT_EQ(images[0], images[1]) << "--restart " << restart;
     }
-    EXPECT_EQ(images[0], images[1]);
 }
 
 // A chain splats its gathered stay weight once, when it moves away (or at

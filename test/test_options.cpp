@@ -74,6 +74,9 @@ TEST(Options, EmptyCommandLineGivesTheLibraryDefaults) {
     EXPECT_EQ(m.omc_effort, lib.omc_effort);
     EXPECT_EQ(m.target, lib.target);
     EXPECT_EQ(m.kelemen, lib.kelemen);
+    EXPECT_EQ(m.strata, lib.strata);
+    EXPECT_EQ(m.film_step, lib.film_step);
+    EXPECT_EQ(m.restart, lib.restart);
     EXPECT_FALSE(o.threads) << "--threads auto";
     // Path tracing: PathTracer's default sampler, and the roulette of Scene.
     EXPECT_EQ(o.sampler, kDefaultPtSampler);
@@ -209,6 +212,7 @@ TEST(Options, ChoicesSetTheirFields) {
     EXPECT_FALSE(parse("render s.scene --weights expected").render.mlt.kelemen);
     EXPECT_TRUE(parse("render s.scene --weights kelemen").render.mlt.kelemen);
     EXPECT_FALSE(parse("render s.scene --burn-in none").render.mlt.burn_in);
+    EXPECT_EQ(parse("render s.scene --restart 32").render.mlt.restart, 32u);
     EXPECT_TRUE(parse("render s.scene --burn-in omc").render.mlt.burn_in);
     EXPECT_TRUE(parse("render s.scene --film-atomics 64").render.mlt.film_atomics64);
     EXPECT_FALSE(parse("render s.scene --film-atomics 32").render.mlt.film_atomics64);

@@ -236,6 +236,13 @@ const std::vector<Flag> kMltFlags = {
          std::uint32_t s = MltOptions().film_step;
          return s == 0 ? std::string("film") : std::to_string(s);
      }},
+    {"--restart", "STEPS", Section::Mlt,
+     [](RenderOptions& o, const FlagValue& v) { o.mlt.restart = std::uint32_t(v.integer()); },
+     "every STEPS steps each chain starts again at a pick of --burn-in-iters fresh burn-in "
+     "rounds (at a fresh sample without burn-in): more, shorter chains, whose error is less "
+     "correlated across the film; 0: never ({range}; default {default}; doc/design.md, "
+     "\"Restarts\")",
+     0, 1 << 30, nullptr, [] { return std::to_string(MltOptions().restart); }},
     {"--large-step", "P", Section::Mlt,
      [](JobOptions& o, const FlagValue& v) { o.mlt.large_step = float(v.probability()); },
      "probability that a mutation draws a whole new path (default {default})", 0, 0, nullptr,

@@ -176,10 +176,26 @@ std::unique_ptr<OmcSchedule> MltRenderer::make_omc_part(Split split) const {
         opt_.threads, opt_.omc_effort);
 }
 
-void MltRenderer::init_chains() {
+void MltRenderer::restart_chains() {
+    owed(kOwedFlush); // what the chains gathered where they stand
+    film_.drain();
+    ++restarts_;
+    // The restart's rounds on a film of their own: not the Sobol points
+    // the OMC part goes on with.
+    BurnInFilm film = smallmlt::burn_in_film(
+        omc_round_seed(mlt_seed(opt_.seed, MltStream::Pixel), restarts_),
+        omc_round_seed(mlt_seed(opt_.seed, MltStream::FilmOffset), restarts_),
+        std::uint32_t(pixels()), opt_.threads);
+    burn_in_.restart(plan_, scene_, target_, film,
+                     MltBurnIn::Chains{state_, stats_, picks_, chains()}, grid_, strata_,
+                     opt_.burn_in_iters);
+    init_chains(film);
+}
+
+void MltRenderer::init_chains(const BurnInFilm& film) {
     cl_ulong omc_seed = mlt_seed(opt_.seed, MltStream::Omc);
-    k_init_.set_args(scene_, target_, burn_in_film_, strata_, state_, values_, cl_uint(chains()),
-                     omc_seed, picks_, stats_);
+    k_init_.set_args(scene_, target_, film, strata_, state_, values_, cl_uint(chains()), omc_seed,
+                     picks_, stats_);
     k_init_.enqueue(cl_, chains());
     cl_.finish("kernel mlt_init over " + std::to_string(chains()) + " chains");
 }
@@ -213,6 +229,7 @@ void MltRenderer::step(std::uint32_t n) {
                 owed(kOwedFlush);
                 film_.drain();
             }
+            if (opt_.restart && steps_run_ % opt_.restart == 0) restart_chains();
         }
         if (omc_) omc_->after_step(chains, [this] { return split_costs(); });
     }

@@ -77,7 +77,7 @@ class MltRenderer : public Integrator {
     double b_rel_error() const;
 
     // Starts every chain at its starting sample's path.
-    void init_chains();
+    void init_chains() { init_chains(burn_in_film_); }
     // n Metropolis steps of every chain.
     void step(std::uint32_t n);
 
@@ -130,6 +130,11 @@ class MltRenderer : public Integrator {
     std::uint32_t omc_first_sample() const { return omc_ ? omc_->part().first_sample() : 0; }
 
   private:
+    // The pick's paths lie on `film`.
+    void init_chains(const BurnInFilm& film);
+    // --restart: the owed weights flushed, every chain starts again at a
+    // pick of fresh burn-in rounds.
+    void restart_chains();
     // The tests' view of the device's buffers and program, for their probes
     // (test/test_support.hpp).
     friend struct MltInspect;
@@ -147,6 +152,7 @@ class MltRenderer : public Integrator {
     StrataGrid grid_;         // the strata's tiles (src/render/strata.hpp)
     StrataBuffer strata_;     // the tiles, the groups' tiles and p b0 per tile
     BurnInFilm burn_in_film_; // where the burn-in's samples lie on the film
+    std::uint32_t restarts_ = 0;
     MltBurnIn burn_in_;
     MltFilm film_;
     Split split_;

@@ -46,6 +46,43 @@ MltBurnIn::MltBurnIn(const ClContext& cl, cl_program program, const MltOptions& 
     if (opt.split != Split::None || opt.target == Target::TwoStage) parts_ = BurnInParts(pixels);
 }
 
+// The round's luminances read back (and its parts added, where `parts`),
+// added to b's sums: the luminance sum of each tile in round_lum_, each
+// sample's tile in sample_tile_. The kernel writes the parts wherever they
+// are kept (MLT_BURN_IN_SAMPLES), so r.omc then exists.
+void MltBurnIn::sample_round(const Round& r, std::uint32_t it, bool parts, BurnInSums& s) {
+    const std::uint32_t m = opt_.threads, pixels = std::uint32_t(r.grid.pixel_tile.size());
+    k_lum_.set_args(r.scene, r.target, r.film, r.chains.state,
+                    cl_ulong(omc_round_seed(mlt_seed(opt_.seed, MltStream::Omc), it)), cl_uint(it),
+                    cl_uint(m), r.lum, keeps_parts() ? r.omc : r.lum, r.chains.stats);
+    k_lum_.run(cl_, m);
+    r.lum.read(cl_, host_.data());
+    if (parts) {
+        r.omc.read(cl_, host_omc_.data());
+        parts_.add(host_omc_);
+    }
+    round_lum_.assign(r.grid.count(), 0.0);
+    for (std::uint32_t i = 0; i < m; ++i) {
+        const float y = host_[i];
+        const std::uint64_t fixed = fixed_b_sample(y);
+        const std::uint32_t pixel =
+            burn_in_film_sample(r.film, pixels, std::uint64_t(it) * r.film.per_round + i).first;
+        const std::uint32_t t = sample_tile_[i] = r.grid.pixel_tile[pixel];
+        s.tile_lum[t] += fixed;
+        s.lum_fixed += fixed;
+        s.lum2 += double(y) * y;
+        round_lum_[t] += double(fixed);
+    }
+}
+
+MltBurnIn::Round::Round(const ClContext& cl, const MemoryPlan& plan, const SceneBuffers& scene,
+                        TargetBuffer& target, const BurnInFilm& film, const Chains& chains,
+                        const StrataGrid& grid, bool parts)
+    : scene(scene), target(target), film(film), chains(chains), grid(grid),
+      lum(cl, CL_MEM_READ_WRITE, plan.bytes(Buffer::Luminance)),
+      scan(cl, CL_MEM_READ_WRITE, plan.bytes(Buffer::Scan)),
+      omc(parts ? ClBuffer(cl, CL_MEM_READ_WRITE, plan.bytes(Buffer::OmcSamples)) : ClBuffer()) {}
+
 void MltBurnIn::run(RankGroup& ranks, const MemoryPlan& plan, const SceneBuffers& scene,
                     TargetBuffer& target, const BurnInFilm& film, const Chains& chains,
                     const StrataGrid& grid, StrataBuffer& strata) {
@@ -53,67 +90,72 @@ void MltBurnIn::run(RankGroup& ranks, const MemoryPlan& plan, const SceneBuffers
     const bool parts = keeps_parts();
     // Rounds before `first` only measure the two-stage target's weights.
     const std::uint32_t first = opt_.target == Target::TwoStage ? iters / 2 : 0;
-    ClBuffer lum(cl_, CL_MEM_READ_WRITE, plan.bytes(Buffer::Luminance));
-    ClBuffer scan(cl_, CL_MEM_READ_WRITE, plan.bytes(Buffer::Scan));
-    ClBuffer omc =
-        parts ? ClBuffer(cl_, CL_MEM_READ_WRITE, plan.bytes(Buffer::OmcSamples)) : ClBuffer();
-    const std::uint32_t tiles = grid.count(), pixels = std::uint32_t(grid.pixel_tile.size());
+    const Round r(cl_, plan, scene, target, film, chains, grid, parts);
+    const std::uint32_t tiles = grid.count();
     BurnInPicker picker(cl_, program_, m, tiles,
                         std::uint32_t(plan.bytes(Buffer::BurnInReplace) / sizeof(cl_ulong)));
-    std::vector<float> host(m), host_omc(parts ? 8 * m : 0);
-    std::vector<std::uint32_t> sample_tile(m);
+    host_.resize(m);
+    host_omc_.resize(parts ? 8 * m : 0);
+    sample_tile_.resize(m);
     const std::uint32_t groups = std::uint32_t(strata.group_tiles().size());
     BurnInSums s;
     s.tile_lum.assign(tiles, 0);
-    const std::uint64_t omc_seed = mlt_seed(opt_.seed, MltStream::Omc);
+    BurnInSums ignored = s; // the two-stage target's rounds estimate no b
     const std::uint64_t pick_seed = mlt_seed(opt_.seed, MltStream::Pick);
     for (std::uint32_t it = 0; it < iters; ++it) {
         if (it == first && first > 0)
             target.fix(ranks, scene.frame.width, scene.frame.height, parts_.rest,
                        std::accumulate(parts_.count.begin(), parts_.count.end(), std::uint64_t(0)));
-        k_lum_.set_args(scene, target, film, chains.state, cl_ulong(omc_round_seed(omc_seed, it)),
-                        cl_uint(it), cl_uint(m), lum, parts ? omc : lum, chains.stats);
-        k_lum_.run(cl_, m);
-        lum.read(cl_, host.data());
-        if (parts) {
-            omc.read(cl_, host_omc.data());
-            parts_.add(host_omc);
-        }
+        sample_round(r, it, parts, it < first ? ignored : s);
         if (it < first) continue;
-        std::vector<double> round_lum(tiles, 0.0);
-        for (std::uint32_t i = 0; i < m; ++i) {
-            const float y = host[i];
-            const std::uint64_t fixed = fixed_b_sample(y);
-            const std::uint32_t pixel =
-                burn_in_film_sample(film, pixels, std::uint64_t(it) * film.per_round + i).first;
-            const std::uint32_t t = sample_tile[i] = grid.pixel_tile[pixel];
-            s.tile_lum[t] += fixed;
-            s.lum_fixed += fixed;
-            s.lum2 += double(y) * y;
-            round_lum[t] += double(fixed);
-        }
         if (it == first && tiles > 1)
-            strata.deal(strata_group_tiles(strata_groups(round_lum, groups), groups));
+            strata.deal(strata_group_tiles(strata_groups(round_lum_, groups), groups));
         if (opt_.burn_in)
-            picker.add_round(lum, host, m, scan, pick_seed, it, chains.count, chains.picks,
-                             PickStrata{&sample_tile, &strata.group_tile(), strata.group_chains()});
+            picker.add_round(
+                r.lum, host_, m, r.scan, pick_seed, it, chains.count, chains.picks,
+                PickStrata{&sample_tile_, &strata.group_tile(), strata.group_chains()});
     }
-    if (!opt_.burn_in) {
-        // Fresh samples: round iters, after those that estimated b.
-        std::vector<cl_uint2> fresh(chains.count);
-        for (std::uint32_t c = 0; c < chains.count; ++c)
-            fresh[c] = cl_uint2{{iters, c}};
-        chains.picks.write(cl_, fresh.data());
-    }
+    rounds_ = iters;
+    if (!opt_.burn_in) fresh_picks(chains); // round iters, after those that estimated b
     s.samples = std::uint64_t(m) * (iters - first);
-    const double n = double(s.samples), mean = mlt_b(s.lum_fixed, s.samples);
-    s.variance = n > 1 ? std::max(0.0, (s.lum2 / n - mean * mean) * n / (n - 1)) : 0;
     sums_ = s;
+    sums_.update_variance();
     if (parts) {
         mlt_part_b_ = parts_.mean(parts_.rest);
         omc_variance_ = parts_.variance(parts_.omc, parts_.omc_y2);
         mlt_variance_ = parts_.variance(parts_.rest, parts_.rest_y2);
     }
+}
+
+void MltBurnIn::fresh_picks(const Chains& chains) {
+    std::vector<cl_uint2> fresh(chains.count);
+    for (std::uint32_t c = 0; c < chains.count; ++c)
+        fresh[c] = cl_uint2{{rounds_, c}};
+    chains.picks.write(cl_, fresh.data());
+    ++rounds_;
+}
+
+void MltBurnIn::restart(const MemoryPlan& plan, const SceneBuffers& scene, TargetBuffer& target,
+                        const BurnInFilm& film, const Chains& chains, const StrataGrid& grid,
+                        StrataBuffer& strata, std::uint32_t rounds) {
+    if (!opt_.burn_in) return fresh_picks(chains);
+    const std::uint32_t m = opt_.threads;
+    const Round r(cl_, plan, scene, target, film, chains, grid, keeps_parts());
+    BurnInPicker picker(cl_, program_, m, grid.count(),
+                        std::uint32_t(plan.bytes(Buffer::BurnInReplace) / sizeof(cl_ulong)));
+    const std::uint64_t pick_seed = mlt_seed(opt_.seed, MltStream::Pick);
+    for (std::uint32_t k = 0; k < rounds; ++k, ++rounds_) {
+        sample_round(r, rounds_, false, sums_);
+        sums_.samples += m;
+        picker.add_round(r.lum, host_, m, r.scan, pick_seed, rounds_, chains.count, chains.picks,
+                         PickStrata{&sample_tile_, &strata.group_tile(), strata.group_chains()});
+    }
+    sums_.update_variance();
+}
+
+void BurnInSums::update_variance() {
+    const double n = double(samples), mean = mlt_b(lum_fixed, samples);
+    variance = n > 1 ? std::max(0.0, (lum2 / n - mean * mean) * n / (n - 1)) : 0;
 }
 
 } // namespace smallmlt

@@ -44,6 +44,7 @@ struct BurnInSums {
     std::vector<std::uint64_t> tile_lum; // lum_fixed of the samples in each tile
     double lum2 = 0;                     // sum of I^2
     double variance = 0;                 // of one sample's I (unbiased)
+    void update_variance();              // from the sums above
     // b from these and `large` large steps of fixed-point sum large_lum
     // (each an OMC sample of I), with the error of the burn-in's variance
     // over all of them.
@@ -70,6 +71,16 @@ class MltBurnIn {
              TargetBuffer& target, const BurnInFilm& film, const Chains& chains,
              const StrataGrid& grid, StrataBuffer& strata);
 
+    // Draws every chain's start anew (--restart): `rounds` more rounds of
+    // the burn-in, numbered after every round so far and placed on the film
+    // by `film`, from which each chain picks as run() did; their samples add
+    // to b's sums (and so to each tile's B), not to the parts. Without
+    // burn-in, fresh samples of a round of their own.
+    void restart(const MemoryPlan& plan, const SceneBuffers& scene, TargetBuffer& target,
+                 const BurnInFilm& film, const Chains& chains, const StrataGrid& grid,
+                 StrataBuffer& strata, std::uint32_t rounds);
+    std::uint32_t rounds() const { return rounds_; }
+
     const BurnInSums& sums() const { return sums_; }
     // Per tile, B of every rank's burn-in samples (a collective; the same on
     // every rank): b0, the normalization Kelemen's weights take.
@@ -85,6 +96,22 @@ class MltBurnIn {
     double mlt_part_b() const { return mlt_part_b_; }
 
   private:
+    // What the rounds of one run() or restart() share.
+    struct Round {
+        Round(const ClContext& cl, const MemoryPlan& plan, const SceneBuffers& scene,
+              TargetBuffer& target, const BurnInFilm& film, const Chains& chains,
+              const StrataGrid& grid, bool parts);
+        const SceneBuffers& scene;
+        TargetBuffer& target;
+        const BurnInFilm& film;
+        const Chains& chains;
+        const StrataGrid& grid;
+        ClBuffer lum, scan, omc;
+    };
+    void sample_round(const Round& r, std::uint32_t it, bool parts, BurnInSums& s);
+    // Each chain c's pick is (round rounds_, c), a fresh sample; then rounds_ + 1.
+    void fresh_picks(const Chains& chains);
+
     const ClContext& cl_;
     cl_program program_;
     MltOptions opt_;
@@ -92,6 +119,10 @@ class MltBurnIn {
     BurnInParts parts_;
     BurnInSums sums_;
     double omc_variance_ = 0, mlt_variance_ = 0, mlt_part_b_ = 0;
+    std::uint32_t rounds_ = 0; // rounds run, those of restarts included
+    std::vector<float> host_, host_omc_;
+    std::vector<std::uint32_t> sample_tile_;
+    std::vector<double> round_lum_;
 };
 
 } // namespace smallmlt

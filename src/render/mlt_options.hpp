@@ -84,6 +84,10 @@ struct MltOptions {
     // The largest small step of the film numbers, in pixels (0: a 64th of
     // the film, Kelemen's 2^-6 of the unit square; cl/sampling/sample_chain.cl).
     std::uint32_t film_step = kDefaultFilmStep;
+    // Every `restart` steps, each chain starts again at a pick of
+    // burn_in_iters fresh burn-in rounds (MltBurnIn::restart): more, shorter
+    // chains in the same memory. 0: never.
+    std::uint32_t restart = 0;
 };
 
 // The large step's probability where none is given: it depends on burn-in
