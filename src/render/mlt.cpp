@@ -177,8 +177,6 @@ std::unique_ptr<OmcSchedule> MltRenderer::make_omc_part(Split split) const {
 }
 
 void MltRenderer::restart_chains() {
-    owed(kOwedFlush); // what the chains gathered where they stand
-    film_.drain();
     ++restarts_;
     // The restart's rounds on a film of their own: not the Sobol points
     // the OMC part goes on with.
@@ -225,11 +223,13 @@ void MltRenderer::step(std::uint32_t n) {
             k_step_.enqueue(cl_, opt_.threads);
             // The pass ends: every chain splats what it owes, and the film's
             // words go to the host before the next pass could overflow them.
-            if (drain_every && iteration % drain_every == 0) {
+            // So it does before the chains start again.
+            const bool restart = opt_.restart && steps_run_ % opt_.restart == 0;
+            if (restart || (drain_every && iteration % drain_every == 0)) {
                 owed(kOwedFlush);
                 film_.drain();
             }
-            if (opt_.restart && steps_run_ % opt_.restart == 0) restart_chains();
+            if (restart) restart_chains();
         }
         if (omc_) omc_->after_step(chains, [this] { return split_costs(); });
     }

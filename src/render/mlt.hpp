@@ -132,8 +132,8 @@ class MltRenderer : public Integrator {
   private:
     // The pick's paths lie on `film`.
     void init_chains(const BurnInFilm& film);
-    // --restart: the owed weights flushed, every chain starts again at a
-    // pick of fresh burn-in rounds.
+    // --restart, once the chains have splatted what they owe: every chain
+    // starts again at a pick of fresh burn-in rounds.
     void restart_chains();
     // The tests' view of the device's buffers and program, for their probes
     // (test/test_support.hpp).

@@ -79,8 +79,6 @@ class MltBurnIn {
     void restart(const MemoryPlan& plan, const SceneBuffers& scene, TargetBuffer& target,
                  const BurnInFilm& film, const Chains& chains, const StrataGrid& grid,
                  StrataBuffer& strata, std::uint32_t rounds);
-    std::uint32_t rounds() const { return rounds_; }
-
     const BurnInSums& sums() const { return sums_; }
     // Per tile, B of every rank's burn-in samples (a collective; the same on
     // every rank): b0, the normalization Kelemen's weights take.
