@@ -1,9 +1,8 @@
-// Burn-in by OMC: the device scan is a prefix sum, sample keys are distinct,
-// chains start on the paths their picks found and where the light is, which
-// removes most of the startup bias, and the burn-in's per-pixel variance is
-// the pixels' sample variance. The picks themselves: test_burnin_pick.cpp.
+// Burn-in by OMC: sample keys are distinct, chains start on the paths their
+// picks found and where the light is, which removes most of the startup
+// bias, and the burn-in's per-pixel variance is the pixels' sample variance.
+// The picks themselves: test_start_picks.cpp.
 #include "base/rng.hpp"
-#include "device/scan.hpp"
 #include "image/image_metrics.hpp"
 #include "render/mlt.hpp"
 #include "test_support.hpp"
@@ -17,82 +16,6 @@
 #include <set>
 
 using namespace smallmlt;
-
-namespace {
-
-template <typename T> std::vector<T> device_scan(const std::vector<T>& in, const char* type) {
-    const ClContext& cl = test::cl();
-    ClProgram prog(
-        cl.build({"cl/core/scan.cl"}, scan_defines(cl.device()) + "#define SCAN_T " + type + "\n"));
-    DeviceScan scan(cl, prog.p, in.size(), sizeof(T));
-    ClBuffer a(cl, CL_MEM_READ_ONLY, in.size() * sizeof(T), in.data());
-    ClBuffer b(cl, CL_MEM_READ_WRITE, in.size() * sizeof(T));
-    scan.run(a, b, in.size());
-    std::vector<T> out(in.size());
-    b.read(cl, out.data());
-    return out;
-}
-
-const std::size_t kSizes[] = {1, 7, 511, 512, 513, 1000, 4097, 100003};
-
-} // namespace
-
-TEST(Scan, IntegerInputMatchesHostExactly) {
-    std::mt19937 rng(1);
-    for (std::size_t n : kSizes) {
-        std::vector<cl_uint> in(n);
-        for (cl_uint& x : in)
-            x = rng() % 1000;
-        std::vector<cl_uint> out = device_scan(in, "uint");
-        cl_uint sum = 0;
-        for (std::size_t i = 0; i < n; ++i) {
-            sum += in[i];
-            ASSERT_EQ(out[i], sum) << "n " << n << " i " << i;
-        }
-    }
-}
-
-// A float scan adds in a different order than a sequential sum; for
-// non-negative inputs each prefix is within log2(n) + 2 roundings of the
-// exact (double) prefix.
-TEST(Scan, FloatInputMatchesHostWithinRounding) {
-    std::mt19937 rng(2);
-    std::uniform_real_distribution<float> u(0.0f, 1.0f);
-    for (std::size_t n : kSizes) {
-        std::vector<float> in(n);
-        for (float& x : in)
-            x = u(rng);
-        std::vector<float> out = device_scan(in, "float");
-        double sum = 0, tol = (std::log2(double(n)) + 2) * std::ldexp(1.0, -24);
-        for (std::size_t i = 0; i < n; ++i) {
-            sum += in[i];
-            ASSERT_NEAR(out[i], sum, tol * sum + 1e-30) << "n " << n << " i " << i;
-        }
-    }
-}
-
-// 64-bit sums (the burn-in's fixed-point weights) are exact in any order,
-// also when the scan runs in place as the burn-in runs it.
-TEST(Scan, Ulong64BitInputMatchesHostExactlyInPlace) {
-    const ClContext& cl = test::cl();
-    ClProgram prog(cl.build({"cl/core/scan.cl"}, scan_defines(cl.device())));
-    std::mt19937_64 rng(2);
-    for (std::size_t n : kSizes) {
-        std::vector<cl_ulong> in(n);
-        for (cl_ulong& x : in)
-            x = rng() >> 24; // sums up to 2^57
-        DeviceScan scan(cl, prog.p, n, sizeof(cl_ulong));
-        ClBuffer b(cl, CL_MEM_READ_WRITE, n * sizeof(cl_ulong), in.data());
-        scan.run(b, b, n);
-        std::vector<cl_ulong> out(n);
-        b.read(cl, out.data());
-        cl_ulong sum = 0;
-        for (std::size_t i = 0; i < n; ++i) {
-            sum += in[i];
-            ASSERT_EQ(out[i], sum) << "n " << n << " i " << i;
-        }
-    }
-}
 
 TEST(OmcKeys, DistinctOverTheWholeCommandLineRange) {
     const std::uint32_t max_threads = 1u << 26, max_rounds = (1u << 16) + 1;

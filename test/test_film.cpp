@@ -195,7 +195,7 @@ TEST(FilmBands, BandsChangeNothing) {
     DeviceScene ds = prepare_scene(test::scene("cornell", 40, 40));
     const std::uint64_t banded = 448 * 12; // 448 pixels of 12 bytes
     EXPECT_EQ(plan_pt(ds, banded).film_bands(), 4u);
-    EXPECT_EQ(plan_mlt(ds, ChainShape{1024, 1, false, false}, 64, banded).film_bands(), 4u);
+    EXPECT_EQ(plan_mlt(ds, ChainShape{1024, 1, false, false}, banded).film_bands(), 4u);
     std::vector<float> mlt[2], pt[2];
     for (int split = 0; split < 2; ++split) {
         MltOptions opt = test::plain_mlt();

@@ -2,7 +2,6 @@
 // thread count follows the device memory and its largest allocation.
 #include "base/error.hpp"
 #include "device/memory_plan.hpp"
-#include "device/scan.hpp"
 #include "render/mlt.hpp"
 #include "test_support.hpp"
 
@@ -57,8 +56,7 @@ TEST(MemoryPlan, PredictsWhatMltRendersAllocate) {
           Case{"cornell", 4096, 4, 8, Split::Visible}}) {
         DeviceScene ds = prepare_scene(test::scene(c.scene, 24, 16, c.depth));
         MemoryPlan plan =
-            plan_mlt(ds, ChainShape{c.threads, c.proposals, false, false, c.split != Split::None},
-                     scan_work_group(test::cl().device()));
+            plan_mlt(ds, ChainShape{c.threads, c.proposals, false, false, c.split != Split::None});
         EXPECT_EQ(plan.bytes(Buffer::Values),
                   std::uint64_t(c.threads / c.proposals) * sizeof(ChainValue));
         EXPECT_EQ(mlt_peak(ds, c.threads, c.proposals, c.split), plan.total())
@@ -79,24 +77,20 @@ TEST(MemoryPlan, PredictsWhatPathTracingAllocates) {
 // Proposals per chain divide the chain states, not the per-thread buffers.
 TEST(MemoryPlan, ProposalsShareChainStates) {
     DeviceScene ds = prepare_scene(test::scene("cornell-water", 16, 16));
-    std::size_t wg = scan_work_group(test::cl().device());
-    MemoryPlan k1 = plan_mlt(ds, ChainShape{4096, 1, false}, wg);
-    MemoryPlan k4 = plan_mlt(ds, ChainShape{4096, 4, false}, wg);
+    MemoryPlan k1 = plan_mlt(ds, ChainShape{4096, 1, false});
+    MemoryPlan k4 = plan_mlt(ds, ChainShape{4096, 4, false});
     EXPECT_EQ(k4.bytes(Buffer::State) * 4, k1.bytes(Buffer::State));
     EXPECT_EQ(k4.bytes(Buffer::Values) * 4, k1.bytes(Buffer::Values));
     EXPECT_EQ(k4.bytes(Buffer::Luminance), k1.bytes(Buffer::Luminance));
 }
 
-// The burn-in keeps each thread's luminance (4 bytes) and its 64-bit
-// fixed-point weight, scanned in place (cl/mlt/burnin.cl), with 64-bit block totals;
-// each chain its pick, (round, index).
-TEST(MemoryPlan, BurnInScansSixtyFourBitWeights) {
+// The burn-in keeps each thread's luminance (4 bytes) on the device, read
+// back for the picks (src/render/start_picks.hpp); each chain its pick,
+// (round, index).
+TEST(MemoryPlan, BurnInKeepsALuminanceAThreadAndAPickAChain) {
     DeviceScene ds = prepare_scene(test::scene("cornell", 16, 16));
-    std::size_t wg = scan_work_group(test::cl().device());
-    MemoryPlan p = plan_mlt(ds, ChainShape{4096, 2, false}, wg);
+    MemoryPlan p = plan_mlt(ds, ChainShape{4096, 2, false});
     EXPECT_EQ(p.bytes(Buffer::Luminance), 4096u * 4);
-    EXPECT_EQ(p.bytes(Buffer::Scan), 4096u * 8);
-    EXPECT_EQ(p.bytes(Buffer::ScanBlocks), scan_bytes(4096, wg, 8));
     EXPECT_EQ(p.bytes(Buffer::Picks), 2048u * 8); // (round, index) per chain
 }
 
@@ -164,7 +158,7 @@ TEST(ThreadCount, TooLittleMemoryNamesWhatWouldDo) {
     given.threads = 1u << 20;
     DeviceBudget small = device_budget(test::cl().device(), std::uint64_t(64) << 20);
     try {
-        check_threads(ds, given, test::cl().device(), small);
+        check_threads(ds, given, small);
         FAIL() << "2^20 threads should not fit in 64 MiB";
     } catch (const UsageError& e) {
         EXPECT_NE(std::string(e.what()).find("threads fit"), std::string::npos) << e.what();

@@ -7,7 +7,6 @@
 // catch gross errors only; test_render_blocks.cpp compares MLT with PT block
 // by block against the measured noise.
 #include "device/memory_plan.hpp"
-#include "device/scan.hpp"
 #include "render/mlt.hpp"
 #include "test_support.hpp"
 
@@ -308,11 +307,11 @@ TEST(ThreadCounts, FewestAndMostThreadsGiveTheSameImage) {
     DeviceBudget budget = device_budget(test::cl().device(), std::uint64_t(64) << 20);
     ChainShape shape;
     shape.threads = 1u << 24;
-    std::uint32_t most = max_threads(ds, shape, test::cl().device(), budget);
+    std::uint32_t most = max_threads(ds, shape, budget);
     ASSERT_GT(most, 1u << 16);
     ASSERT_LT(most, 1u << 24);
     shape.threads = most + 1;
-    EXPECT_FALSE(plan_fits(plan_mlt(ds, shape, scan_work_group(test::cl().device())), budget));
+    EXPECT_FALSE(plan_fits(plan_mlt(ds, shape), budget));
     const std::uint64_t mutations = 400 * 1024;
     for (std::uint32_t n : {256u, most}) {
         MltOptions opt = cornell_options(1, 3);

@@ -5,7 +5,6 @@
 #include "base/error.hpp"
 #include "device/device_profile.hpp"
 #include "device/memory_plan.hpp"
-#include "device/scan.hpp"
 
 #include <algorithm>
 #include <cstdio>
@@ -19,13 +18,13 @@ struct BudgetRow {
     std::uint64_t chain_packed, chain_float32, chains, state, other, total, naive;
 };
 
-BudgetRow budget_row(DeviceScene& ds, int depth, const ChainShape& shape, const DeviceInfo& dev,
+BudgetRow budget_row(DeviceScene& ds, int depth, const ChainShape& shape,
                      const DeviceBudget& budget) {
     SceneFeatures f = ds.layout.features;
     f.depth = depth;
     ds.layout = make_layout(f);
     ds.frame.depth = std::uint32_t(depth);
-    MemoryPlan plan = plan_mlt(ds, shape, scan_work_group(dev), budget.max_alloc_bytes);
+    MemoryPlan plan = plan_mlt(ds, shape, budget.max_alloc_bytes);
     BudgetRow r;
     r.depth = depth;
     r.bits_per_bounce = ds.layout.bounce_bits;
@@ -81,14 +80,12 @@ void print_rows(const std::vector<BudgetRow>& rows, BudgetFormat fmt) {
 
 // The film's share at the scene's depth, and the least device memory that
 // renders this scene and film by MLT (at kMinThreads) and by PT.
-void print_film(const DeviceScene& ds, const ChainShape& shape, const DeviceInfo& dev,
-                const DeviceBudget& budget) {
-    MemoryPlan mlt = plan_mlt(ds, shape, scan_work_group(dev), budget.max_alloc_bytes);
+void print_film(const DeviceScene& ds, const ChainShape& shape, const DeviceBudget& budget) {
+    MemoryPlan mlt = plan_mlt(ds, shape, budget.max_alloc_bytes);
     ChainShape least = shape;
     least.threads = kMinThreads;
-    std::uint64_t mlt_min = smallest_device_memory([&](std::uint64_t max_alloc) {
-        return plan_mlt(ds, least, scan_work_group(dev), max_alloc);
-    });
+    std::uint64_t mlt_min = smallest_device_memory(
+        [&](std::uint64_t max_alloc) { return plan_mlt(ds, least, max_alloc); });
     std::uint64_t pt_min =
         smallest_device_memory([&](std::uint64_t max_alloc) { return plan_pt(ds, max_alloc); });
     std::printf("film %ux%u: %s in %u band(s), %.1f%% of the MLT render's %s; the least "
@@ -135,7 +132,7 @@ int run_budget(const BudgetOptions& o) {
     if (o.threads) {
         shape.threads = *o.threads;
         check_chain_shape(shape);
-        check_threads(ds, shape, dev, budget);
+        check_threads(ds, shape, budget);
     } else {
         shape.threads = choose_threads(ds, shape, dev, budget).threads;
         check_chain_shape(shape);
@@ -147,12 +144,12 @@ int run_budget(const BudgetOptions& o) {
                     shape.proposals, format_bytes(budget.global_bytes).c_str(),
                     format_bytes(budget.max_alloc_bytes).c_str(),
                     budget.emulated ? " (emulated)" : "");
-        print_film(ds, shape, dev, budget);
+        print_film(ds, shape, budget);
         print_textures(scene, budget, halved);
     }
     std::vector<BudgetRow> rows;
     for (int d = std::min(1, max_depth); d <= max_depth; ++d)
-        rows.push_back(budget_row(ds, d, shape, dev, budget));
+        rows.push_back(budget_row(ds, d, shape, budget));
     print_rows(rows, o.format);
     return 0;
 }

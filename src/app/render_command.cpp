@@ -66,7 +66,7 @@ std::uint32_t fit_to_device(const RenderOptions& o, const ClContext& cl, const D
     if (o.threads) {
         shape.threads = *o.threads;
         check_chain_shape(shape);
-        MemoryPlan plan = check_threads(ds, shape, cl.device(), budget);
+        MemoryPlan plan = check_threads(ds, shape, budget);
         if (say)
             std::printf("threads: %u (given); film %s in %u band(s); device memory %s of %s "
                         "allowed\n",

@@ -2,7 +2,6 @@
 
 #include "base/bits.hpp"
 #include "base/error.hpp"
-#include "device/scan.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -140,8 +139,7 @@ MemoryPlan plan_pt(const DeviceScene& ds, std::uint64_t max_alloc) {
     return p;
 }
 
-MemoryPlan plan_mlt(const DeviceScene& ds, const ChainShape& shape, std::size_t scan_wg,
-                    std::uint64_t max_alloc) {
+MemoryPlan plan_mlt(const DeviceScene& ds, const ChainShape& shape, std::uint64_t max_alloc) {
     MemoryPlan p;
     add_scene(p, ds);
     std::uint64_t chains = shape.chains(), threads = shape.threads;
@@ -151,25 +149,17 @@ MemoryPlan plan_mlt(const DeviceScene& ds, const ChainShape& shape, std::size_t 
     add_film(p, pixels(ds), mlt_film_pixel_bytes(shape.film_atomics64, shape.film_layers),
              max_alloc);
     add(p, Buffer::Stats, group_rows(threads) * MLT_STAT_COUNT * sizeof(std::uint64_t));
-    // Each chain's start, (round, index) (cl/mlt/burnin.cl).
+    // Each chain's start, (round, index) (src/render/start_picks.hpp).
     add(p, Buffer::Picks, chains * 2 * sizeof(std::uint32_t));
     add(p, Buffer::TargetWeights, shape.target_cells * sizeof(float));
-    // The strata (src/render/strata.hpp): at most a tile per work-group, the
-    // group's tile, and per tile, for the burn-in, where the round's samples
-    // of the tile begin and the reservoir's threshold.
+    // The strata (src/render/strata.hpp): at most a tile per work-group, and
+    // the group's tile.
     const std::uint64_t groups = group_rows(threads), tiles = shape.strata ? groups : 1;
     add(p, Buffer::StrataTiles, tiles * sizeof(FilmTile));
     add(p, Buffer::StrataWeights, tiles * sizeof(float));
     add(p, Buffer::GroupTiles, groups * sizeof(std::uint32_t));
-    add(p, Buffer::BurnInFirst, (tiles + 1) * sizeof(std::uint32_t));
-    add(p, Buffer::BurnInReplace, tiles * sizeof(cl_ulong));
-    // The round's samples in the order of their tiles.
-    add(p, Buffer::BurnInOrder, threads * sizeof(std::uint32_t));
+    // A burn-in round's luminances, read back for the picks.
     add(p, Buffer::Luminance, threads * sizeof(float));
-    // The burn-in's 64-bit fixed-point weights, scanned in place (cl/mlt/burnin.cl).
-    add(p, Buffer::Scan, threads * sizeof(std::uint64_t));
-    // Several buffers; their sum counts as one entry (at least as big as each).
-    add(p, Buffer::ScanBlocks, scan_bytes(threads, scan_wg, sizeof(std::uint64_t)));
     if (shape.omc_part) {
         // The OMC part's scratch band and counters (src/render/path_tracer.hpp).
         add(p, Buffer::OmcScratchBand, omc_scratch_pixels(pixels(ds)) * kPtFilmPixelBytes);
@@ -252,16 +242,16 @@ std::uint32_t busy_threads(const DeviceInfo& dev) {
 namespace {
 
 MemoryPlan plan_for(const DeviceScene& ds, ChainShape shape, std::uint32_t threads,
-                    const DeviceInfo& dev, const DeviceBudget& budget) {
+                    const DeviceBudget& budget) {
     shape.threads = threads;
-    return plan_mlt(ds, shape, scan_work_group(dev), budget.max_alloc_bytes);
+    return plan_mlt(ds, shape, budget.max_alloc_bytes);
 }
 
-[[noreturn]] void too_small(const DeviceScene& ds, const ChainShape& shape, const DeviceInfo& dev,
+[[noreturn]] void too_small(const DeviceScene& ds, const ChainShape& shape,
                             const DeviceBudget& budget) {
-    MemoryPlan smallest = plan_for(ds, shape, kMinThreads, dev, budget);
+    MemoryPlan smallest = plan_for(ds, shape, kMinThreads, budget);
     std::uint64_t needed = smallest_device_memory([&](std::uint64_t max_alloc) {
-        return plan_for(ds, shape, kMinThreads, dev, DeviceBudget{0, max_alloc, true});
+        return plan_for(ds, shape, kMinThreads, DeviceBudget{0, max_alloc, true});
     });
     throw InputError("not enough device memory: even " + std::to_string(kMinThreads) +
                      " threads need " + format_bytes(smallest.total()) + " (largest buffer " +
@@ -281,36 +271,35 @@ ThreadChoice choose_threads(const DeviceScene& ds, ChainShape shape, const Devic
     ThreadChoice c;
     std::uint32_t start = busy_threads(dev);
     for (std::uint32_t n = start; n >= kMinThreads; n /= 2) {
-        c.plan = plan_for(ds, shape, n, dev, budget);
+        c.plan = plan_for(ds, shape, n, budget);
         if (plan_fits(c.plan, budget)) {
             c.threads = n;
             c.reduction = start / n;
             return c;
         }
     }
-    too_small(ds, shape, dev, budget);
+    too_small(ds, shape, budget);
 }
 
-MemoryPlan check_threads(const DeviceScene& ds, const ChainShape& shape, const DeviceInfo& dev,
+MemoryPlan check_threads(const DeviceScene& ds, const ChainShape& shape,
                          const DeviceBudget& budget) {
-    MemoryPlan plan = plan_for(ds, shape, shape.threads, dev, budget);
+    MemoryPlan plan = plan_for(ds, shape, shape.threads, budget);
     if (plan_fits(plan, budget)) return plan;
-    std::uint32_t most = max_threads(ds, shape, dev, budget);
-    if (most == 0) too_small(ds, shape, dev, budget);
+    std::uint32_t most = max_threads(ds, shape, budget);
+    if (most == 0) too_small(ds, shape, budget);
     throw UsageError("--threads " + std::to_string(shape.threads) + " needs " +
                      format_bytes(plan.total()) + " of device memory (largest buffer " +
                      format_bytes(plan.largest()) + "); at most " + std::to_string(most) +
                      " threads fit (or use --threads auto)");
 }
 
-std::uint32_t max_threads(const DeviceScene& ds, ChainShape shape, const DeviceInfo& dev,
-                          const DeviceBudget& budget) {
-    if (plan_fits(plan_for(ds, shape, shape.threads, dev, budget), budget)) return shape.threads;
-    if (!plan_fits(plan_for(ds, shape, kMinThreads, dev, budget), budget)) return 0;
+std::uint32_t max_threads(const DeviceScene& ds, ChainShape shape, const DeviceBudget& budget) {
+    if (plan_fits(plan_for(ds, shape, shape.threads, budget), budget)) return shape.threads;
+    if (!plan_fits(plan_for(ds, shape, kMinThreads, budget), budget)) return 0;
     std::uint32_t lo = kMinThreads, hi = shape.threads; // fits at lo, not at hi
     while (hi - lo > 1) {
         std::uint32_t mid = lo + (hi - lo) / 2;
-        (plan_fits(plan_for(ds, shape, mid, dev, budget), budget) ? lo : hi) = mid;
+        (plan_fits(plan_for(ds, shape, mid, budget), budget) ? lo : hi) = mid;
     }
     return lo;
 }

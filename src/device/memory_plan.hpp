@@ -15,7 +15,7 @@
 namespace smallmlt {
 
 // Every kind of device buffer a render allocates: X(Enum, name). The
-// burn-in's (luminance, scan, scan blocks, OMC samples) are freed once the
+// burn-in's (luminance, OMC samples) are freed once the
 // chains have started, but counted as held at once: total() is the peak.
 #define SMALLMLT_BUFFERS(X)                                                                        \
     X(Triangles, "triangles")                                                                      \
@@ -35,12 +35,7 @@ namespace smallmlt {
     X(StrataTiles, "strata tiles")                                                                 \
     X(StrataWeights, "strata weights")                                                             \
     X(GroupTiles, "group tiles")                                                                   \
-    X(BurnInOrder, "burn-in order")                                                                \
-    X(BurnInFirst, "burn-in tile starts")                                                          \
-    X(BurnInReplace, "burn-in thresholds")                                                         \
     X(Luminance, "luminance")                                                                      \
-    X(Scan, "scan")                                                                                \
-    X(ScanBlocks, "scan blocks")                                                                   \
     X(OmcScratchBand, "OMC scratch band")                                                          \
     X(OmcStats, "OMC stats")                                                                       \
     X(OmcSamples, "OMC samples")
@@ -109,7 +104,7 @@ std::uint64_t mlt_film_pixel_bytes(bool atomics64, std::uint32_t layers);
 
 // Every buffer of a render whose film's bands fit max_alloc bytes each.
 MemoryPlan plan_pt(const DeviceScene& ds, std::uint64_t max_alloc = kNoAllocLimit);
-MemoryPlan plan_mlt(const DeviceScene& ds, const ChainShape& shape, std::size_t scan_wg,
+MemoryPlan plan_mlt(const DeviceScene& ds, const ChainShape& shape,
                     std::uint64_t max_alloc = kNoAllocLimit);
 
 // What the render may use: the device's memory (or --device-mem) and its
@@ -167,14 +162,13 @@ ThreadChoice choose_threads(const DeviceScene& ds, ChainShape shape, const Devic
 
 // --threads N given: throws UsageError naming the largest N that fits if it
 // does not.
-MemoryPlan check_threads(const DeviceScene& ds, const ChainShape& shape, const DeviceInfo& dev,
+MemoryPlan check_threads(const DeviceScene& ds, const ChainShape& shape,
                          const DeviceBudget& budget);
 
 // The largest thread count up to shape.threads whose render fits (0 if not
 // even kMinThreads do). Any count fits, not only the powers of two that
 // --threads auto tries.
-std::uint32_t max_threads(const DeviceScene& ds, ChainShape shape, const DeviceInfo& dev,
-                          const DeviceBudget& budget);
+std::uint32_t max_threads(const DeviceScene& ds, ChainShape shape, const DeviceBudget& budget);
 
 // "12.3 MiB"
 std::string format_bytes(std::uint64_t bytes);

@@ -1,9 +1,7 @@
 // Burn-in by OMC (Frolov and Galaktionov, section 3.1): how its samples are
-// numbered, the weighted reservoir that picks the chains' starts on the
-// device (cl/mlt/burnin.cl), and what its paths leave for the split's OMC part.
+// numbered and placed on the film, and what its paths leave for the split's
+// OMC part. The chains' starts drawn from them: start_picks.hpp.
 #pragma once
-#include "device/ocl.hpp"
-#include "device/scan.hpp"
 #include "shared_types.h"
 
 #include <cstdint>
@@ -38,63 +36,6 @@ std::pair<std::uint32_t, std::uint32_t> burn_in_film_sample(const BurnInFilm& f,
 // The first Sobol sample number that no pixel reaches in the burn-in's first
 // `samples` samples: where the OMC part's path tracer begins.
 std::uint32_t burn_in_film_end(const BurnInFilm& f, std::uint32_t pixels, std::uint64_t samples);
-
-// The exponent e of the burn-in's fixed-point weights (cl/mlt/burnin.cl,
-// burnin_weights): the largest with sum * 2^e < 2^62, where sum is the sum
-// of a round's finite luminances (0 if it is not positive).
-int burnin_weight_exponent(double sum);
-
-// The reservoir's replacement threshold for a round of luminance sum s, when
-// the sums of all rounds so far, this one included, make `total`: 2^32 s /
-// total rounded (2^32: always), or, while total is 0 (no light yet),
-// 2^32 / (round + 1), so that picks stay uniform over all samples so far.
-std::uint64_t burnin_replace_threshold(double s, double total, std::uint32_t round);
-
-// Which stratum (src/render/strata.hpp) each sample of a round and each
-// chain is in: sample i of the round in tile sample_tile[i], chain j in tile
-// group_tile[j / group_chains] on the device. The default is one stratum.
-struct PickStrata {
-    const std::vector<std::uint32_t>* sample_tile = nullptr; // null: every sample in tile 0
-    const ClBuffer* group_tile = nullptr;                    // null: every chain in tile 0
-    std::uint32_t group_chains = 0xFFFFFFFFu;
-};
-
-// The burn-in's chain starts, on the device, pooled over rounds by a
-// weighted reservoir (cl/mlt/burnin.cl): in each round, every chain replaces
-// its pick with probability s_r / (s_0 + .. + s_r), the sums of its
-// stratum's luminances, by a sample of the round in its stratum drawn in
-// proportion to luminance (fixed-point weights in the order of the strata,
-// their prefix sum, binary search within the stratum's part). After the
-// last round each chain's pick is an independent draw from all the rounds'
-// samples of its stratum in proportion to luminance (uniform among them if
-// none had light).
-class BurnInPicker {
-  public:
-    // For rounds of up to max_n samples in `tiles` strata, with room for
-    // tile_room (the memory plan's); `program` holds cl/core/rng.h,
-    // cl/core/scan.cl (SCAN_T ulong) and cl/mlt/burnin.cl.
-    BurnInPicker(const ClContext& cl, cl_program program, std::uint32_t max_n,
-                 std::uint32_t tiles = 1, std::uint32_t tile_room = 1);
-    // Adds the next round, the samples of burn-in round `round`, of n samples
-    // whose luminances are `lum` on the device and `host` (the same values,
-    // read back): each of the `count` picks (uint2 (round, index) each, in
-    // `picks`) is replaced as above, with the streams of `seed` and the
-    // round. `scan` (n x 8 bytes) is left holding the prefix sums of the
-    // round's weights in the strata's order.
-    void add_round(const ClBuffer& lum, const std::vector<float>& host, std::uint32_t n,
-                   const ClBuffer& scan, std::uint64_t seed, std::uint32_t round,
-                   std::uint32_t count, const ClBuffer& picks, const PickStrata& strata = {});
-    std::uint32_t rounds() const { return rounds_; }
-
-  private:
-    const ClContext& cl_;
-    DeviceScan scan_;
-    ClKernel weights_, pick_;
-    ClBuffer order_, first_, replace_, one_tile_;
-    std::uint32_t rounds_ = 0;
-    std::vector<double> total_;       // per stratum, luminance sum of the rounds so far
-    std::vector<std::uint32_t> seen_; // per stratum, rounds that had samples in it
-};
 
 // What the burn-in's paths leave for a split (src/render/split.hpp): per
 // pixel and channel the sums of their OMC and MLT parts, and per pixel how

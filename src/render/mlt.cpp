@@ -3,7 +3,6 @@
 #include "base/clock.hpp"
 #include "base/color.hpp"
 #include "base/error.hpp"
-#include "device/scan.hpp"
 #include "render/mlt_seeds.hpp"
 #include "render/programs.hpp"
 #include "render/ranks.hpp"
@@ -17,10 +16,10 @@ namespace smallmlt {
 
 namespace {
 
-std::string program_defines(const ClContext& cl, const DeviceScene& ds, const MltOptions& opt,
+std::string program_defines(const DeviceScene& ds, const MltOptions& opt,
                             const MltTestHooks& hooks) {
-    std::string d = ds.layout.defines() + scan_defines(cl.device()) + "#define MLT_GROUP " +
-                    std::to_string(kDefaultWorkGroup) + "u\n";
+    std::string d =
+        ds.layout.defines() + "#define MLT_GROUP " + std::to_string(kDefaultWorkGroup) + "u\n";
     if (hooks.float32_states) d += "#define PSS_FLOAT32 1\n";
     if (hooks.eager_stay) d += "#define MLT_EAGER_STAY 1\n";
     if (opt.split != Split::None || opt.target == Target::TwoStage)
@@ -80,9 +79,8 @@ std::vector<std::string> mlt_program_files(const MltTestHooks& hooks) {
 MltRenderer::MltRenderer(const ClContext& cl, const DeviceScene& ds, const MltOptions& opt,
                          const MltTestHooks& hooks)
     : cl_(cl), ds_(require_device(cl, ds, opt)), opt_(check_options(opt, hooks)), hooks_(hooks),
-      plan_(plan_mlt(ds, mlt_chain_shape(opt, hooks), scan_work_group(cl.device()),
-                     max_alloc(cl, opt))),
-      program_(cl.build(mlt_program_files(hooks), program_defines(cl, ds, opt, hooks))),
+      plan_(plan_mlt(ds, mlt_chain_shape(opt, hooks), max_alloc(cl, opt))),
+      program_(cl.build(mlt_program_files(hooks), program_defines(ds, opt, hooks))),
       k_init_(program_.p, "mlt_init"), k_step_(program_.p, "mlt_step"),
       k_owed_(program_.p, "mlt_owed"), scene_(cl, ds),
       state_(cl, CL_MEM_READ_WRITE, plan_.bytes(Buffer::State)),

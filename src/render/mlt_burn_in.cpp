@@ -47,9 +47,9 @@ MltBurnIn::MltBurnIn(const ClContext& cl, cl_program program, const MltOptions& 
 }
 
 // The round's luminances read back (and its parts added, where `parts`),
-// added to b's sums: the luminance sum of each tile in round_lum_, each
-// sample's tile in sample_tile_. The kernel writes the parts wherever they
-// are kept (MLT_BURN_IN_SAMPLES), so r.omc then exists.
+// added to b's sums, and the luminance sum of each tile to round_lum_. The
+// kernel writes the parts wherever they are kept (MLT_BURN_IN_SAMPLES), so
+// r.omc then exists.
 void MltBurnIn::sample_round(const Round& r, std::uint32_t it, bool parts, BurnInSums& s) {
     const std::uint32_t m = opt_.threads, pixels = std::uint32_t(r.grid.pixel_tile.size());
     k_lum_.set_args(r.scene, r.target, r.film, r.chains.state,
@@ -67,7 +67,7 @@ void MltBurnIn::sample_round(const Round& r, std::uint32_t it, bool parts, BurnI
         const std::uint64_t fixed = fixed_b_sample(y);
         const std::uint32_t pixel =
             burn_in_film_sample(r.film, pixels, std::uint64_t(it) * r.film.per_round + i).first;
-        const std::uint32_t t = sample_tile_[i] = r.grid.pixel_tile[pixel];
+        const std::uint32_t t = r.grid.pixel_tile[pixel];
         s.tile_lum[t] += fixed;
         s.lum_fixed += fixed;
         s.lum2 += double(y) * y;
@@ -80,7 +80,6 @@ MltBurnIn::Round::Round(const ClContext& cl, const MemoryPlan& plan, const Scene
                         const StrataGrid& grid, bool parts)
     : scene(scene), target(target), film(film), chains(chains), grid(grid),
       lum(cl, CL_MEM_READ_WRITE, plan.bytes(Buffer::Luminance)),
-      scan(cl, CL_MEM_READ_WRITE, plan.bytes(Buffer::Scan)),
       omc(parts ? ClBuffer(cl, CL_MEM_READ_WRITE, plan.bytes(Buffer::OmcSamples)) : ClBuffer()) {}
 
 void MltBurnIn::run(RankGroup& ranks, const MemoryPlan& plan, const SceneBuffers& scene,
@@ -92,16 +91,13 @@ void MltBurnIn::run(RankGroup& ranks, const MemoryPlan& plan, const SceneBuffers
     const std::uint32_t first = opt_.target == Target::TwoStage ? iters / 2 : 0;
     const Round r(cl_, plan, scene, target, film, chains, grid, parts);
     const std::uint32_t tiles = grid.count();
-    BurnInPicker picker(cl_, program_, m, tiles,
-                        std::uint32_t(plan.bytes(Buffer::BurnInReplace) / sizeof(cl_ulong)));
+    StartPicks picks(film, scene.frame.width, scene.frame.height, grid);
     host_.resize(m);
     host_omc_.resize(parts ? 8 * m : 0);
-    sample_tile_.resize(m);
     const std::uint32_t groups = std::uint32_t(strata.group_tiles().size());
     BurnInSums s;
     s.tile_lum.assign(tiles, 0);
     BurnInSums ignored = s; // the two-stage target's rounds estimate no b
-    const std::uint64_t pick_seed = mlt_seed(opt_.seed, MltStream::Pick);
     for (std::uint32_t it = 0; it < iters; ++it) {
         if (it == first && first > 0)
             target.fix(ranks, scene.frame.width, scene.frame.height, parts_.rest,
@@ -110,13 +106,13 @@ void MltBurnIn::run(RankGroup& ranks, const MemoryPlan& plan, const SceneBuffers
         if (it < first) continue;
         if (it == first && tiles > 1)
             strata.deal(strata_group_tiles(strata_groups(round_lum_, groups), groups));
-        if (opt_.burn_in)
-            picker.add_round(
-                r.lum, host_, m, r.scan, pick_seed, it, chains.count, chains.picks,
-                PickStrata{&sample_tile_, &strata.group_tile(), strata.group_chains()});
+        if (opt_.burn_in) picks.add_round(it, host_);
     }
     rounds_ = iters;
-    if (!opt_.burn_in) fresh_picks(chains); // round iters, after those that estimated b
+    if (opt_.burn_in)
+        write_picks(picks, chains, strata);
+    else
+        fresh_picks(chains); // round iters, after those that estimated b
     s.samples = std::uint64_t(m) * (iters - first);
     sums_ = s;
     sums_.update_variance();
@@ -125,6 +121,13 @@ void MltBurnIn::run(RankGroup& ranks, const MemoryPlan& plan, const SceneBuffers
         omc_variance_ = parts_.variance(parts_.omc, parts_.omc_y2);
         mlt_variance_ = parts_.variance(parts_.rest, parts_.rest_y2);
     }
+}
+
+void MltBurnIn::write_picks(const StartPicks& picks, const Chains& chains,
+                            const StrataBuffer& strata) {
+    const std::vector<cl_uint2> p = picks.draw(strata.group_tiles(), strata.group_chains(),
+                                               chains.count, mlt_seed(opt_.seed, MltStream::Pick));
+    chains.picks.write(cl_, p.data());
 }
 
 void MltBurnIn::fresh_picks(const Chains& chains) {
@@ -141,16 +144,14 @@ void MltBurnIn::restart(const MemoryPlan& plan, const SceneBuffers& scene, Targe
     if (!opt_.burn_in) return fresh_picks(chains);
     const std::uint32_t m = opt_.threads;
     const Round r(cl_, plan, scene, target, film, chains, grid, keeps_parts());
-    BurnInPicker picker(cl_, program_, m, grid.count(),
-                        std::uint32_t(plan.bytes(Buffer::BurnInReplace) / sizeof(cl_ulong)));
-    const std::uint64_t pick_seed = mlt_seed(opt_.seed, MltStream::Pick);
+    StartPicks picks(film, scene.frame.width, scene.frame.height, grid);
     for (std::uint32_t k = 0; k < rounds; ++k, ++rounds_) {
         sample_round(r, rounds_, false, sums_);
         sums_.samples += m;
-        picker.add_round(r.lum, host_, m, r.scan, pick_seed, rounds_, chains.count, chains.picks,
-                         PickStrata{&sample_tile_, &strata.group_tile(), strata.group_chains()});
+        picks.add_round(rounds_, host_);
     }
     sums_.update_variance();
+    write_picks(picks, chains, strata);
 }
 
 void BurnInSums::update_variance() {

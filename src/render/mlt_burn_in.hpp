@@ -1,6 +1,6 @@
 // The burn-in of an MLT render by OMC (Frolov and Galaktionov, section
 // 3.1): rounds of one OMC sample per thread (cl/kernels/mlt.cl,
-// mlt_luminance) that pick the chains' starts (BurnInPicker), make b's first
+// mlt_luminance) that pick the chains' starts (StartPicks), make b's first
 // estimate, and, for a split or the two-stage target, leave their paths'
 // parts per pixel (BurnInParts). With the two-stage target, the first half
 // of the rounds fixes the target's weights and only the second estimates b
@@ -12,6 +12,7 @@
 #include "render/burn_in.hpp"
 #include "render/mlt_options.hpp"
 #include "render/ranks.hpp"
+#include "render/start_picks.hpp"
 #include "render/strata_buffer.hpp"
 #include "render/target_buffer.hpp"
 
@@ -104,11 +105,13 @@ class MltBurnIn {
         const BurnInFilm& film;
         const Chains& chains;
         const StrataGrid& grid;
-        ClBuffer lum, scan, omc;
+        ClBuffer lum, omc;
     };
     void sample_round(const Round& r, std::uint32_t it, bool parts, BurnInSums& s);
     // Each chain c's pick is (round rounds_, c), a fresh sample; then rounds_ + 1.
     void fresh_picks(const Chains& chains);
+    // Each chain's pick drawn by `picks` (its tile's, by `strata`).
+    void write_picks(const StartPicks& picks, const Chains& chains, const StrataBuffer& strata);
 
     const ClContext& cl_;
     cl_program program_;
@@ -119,7 +122,6 @@ class MltBurnIn {
     double omc_variance_ = 0, mlt_variance_ = 0, mlt_part_b_ = 0;
     std::uint32_t rounds_ = 0; // rounds run, those of restarts included
     std::vector<float> host_, host_omc_;
-    std::vector<std::uint32_t> sample_tile_;
     std::vector<double> round_lum_;
 };
 

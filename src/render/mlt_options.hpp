@@ -51,8 +51,8 @@ struct MltOptions {
     std::uint64_t seed = 1;
     // Burn-in by OMC (Frolov and Galaktionov, section 3.1): burn_in_iters
     // rounds of one OMC sample per thread; each chain starts at a sample
-    // drawn from all rounds' samples in proportion to luminance (a weighted
-    // reservoir over rounds, BurnInPicker). All threads x iters samples
+    // drawn from all rounds' samples in proportion to luminance (systematic
+    // resampling along the film, StartPicks). All threads x iters samples
     // estimate b. Without burn-in, chains start at fresh OMC samples.
     bool burn_in = true;
     std::uint32_t burn_in_iters = 32; // chosen by measurement (doc/RESULTS.md)

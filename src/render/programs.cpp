@@ -18,7 +18,6 @@ const Row kTable[] = {
     {Stage::Core,     "cl/core/shared_types.h",            true,  true},
     {Stage::Core,     "cl/core/rng.h",                     true,  true},
     {Stage::Core,     "cl/core/fixed_point.h",             true,  true},
-    {Stage::Core,     "cl/core/scan.cl",                   false, true},
     {Stage::Geometry, "cl/geometry/geometry.cl",           true,  true},
     {Stage::Geometry, "cl/geometry/bvh.cl",                true,  true},
     {Stage::Geometry, "cl/geometry/camera.cl",             true,  true},
@@ -50,7 +49,6 @@ const Row kTable[] = {
     {Stage::Mlt,      "cl/mlt/chain_value.cl",             false, true},
     {Stage::Mlt,      "cl/mlt/film.cl",                    false, true},
     {Stage::Mlt,      "cl/mlt/mlt_step.cl",                false, true},
-    {Stage::Mlt,      "cl/mlt/burnin.cl",                  false, true},
     {Stage::Kernels,  "cl/kernels/pt.cl",                  true,  false},
     {Stage::Kernels,  "cl/kernels/mlt.cl",                 false, true},
 };
