@@ -95,7 +95,8 @@ for size in $SIZES; do
         "mlt-strata=MLT, split auto, strata auto" "mlt-strata8=MLT, split auto, strata of 8" \
         "mlt-strata32=MLT, split auto, strata of 32" \
         "mlt-fs4=MLT, film steps of 4 pixels" "mlt-fs8=MLT, film steps of 8 pixels" \
-        "mlt-fs16=MLT, film steps of 16 pixels" "mlt-r16=MLT, restarts every 16 steps" \
+        "mlt-fs16=MLT, film steps of 16 pixels" "mlt-r8=MLT, restarts every 8 steps" \
+        "mlt-r16=MLT, restarts every 16 steps" \
         "mlt-r32=MLT, restarts every 32 steps"
     # the lower middle of the film at full size (cornell-water's floor under
     # the water): the reference and each method at equal time, seed $first
