@@ -68,13 +68,6 @@ void StartPicks::add_round(std::uint32_t round, const std::vector<float>& lum) {
     exponent_ = total_ > 0 ? 62 - e2 : 0;
 }
 
-std::uint64_t StartPicks::samples() const {
-    std::uint64_t n = 0;
-    for (const auto& l : lum_)
-        n += l.size();
-    return n;
-}
-
 template <class F> void StartPicks::each_in_pixel(std::uint32_t pixel, bool uniform, F f) const {
     const std::uint64_t P = pixels_, per_round = film_.per_round;
     for (std::size_t k = 0; k < rounds_.size(); ++k) {
@@ -86,7 +79,7 @@ template <class F> void StartPicks::each_in_pixel(std::uint32_t pixel, bool unif
     }
 }
 
-void StartPicks::draw_tile(std::size_t begin, std::size_t end, std::uint32_t u,
+bool StartPicks::draw_tile(std::size_t begin, std::size_t end, std::uint32_t u,
                            const std::vector<std::uint32_t>& chains,
                            std::vector<cl_uint2>& out) const {
     std::uint64_t total = 0, count = 0;
@@ -97,7 +90,7 @@ void StartPicks::draw_tile(std::size_t begin, std::size_t end, std::uint32_t u,
         });
     const bool uniform = total == 0;
     if (uniform) total = count;
-    if (total == 0) return;
+    if (total == 0) return false;
     // Chain q of k takes the sample whose cumulative weight interval holds
     // floor((q + u 2^-32) total / k).
     const unsigned __int128 k = chains.size();
@@ -111,6 +104,7 @@ void StartPicks::draw_tile(std::size_t begin, std::size_t end, std::uint32_t u,
             for (; q < chains.size() && next < acc; next = threshold(++q))
                 out[chains[q]] = cl_uint2{{r, i}};
         });
+    return true;
 }
 
 std::vector<cl_uint2> StartPicks::draw(const std::vector<std::uint32_t>& group_tile,
@@ -123,18 +117,12 @@ std::vector<cl_uint2> StartPicks::draw(const std::vector<std::uint32_t>& group_t
             group_tile.empty() ? 0 : std::min<std::size_t>(c / group_chains, group_tile.size() - 1);
         tile_chains[group_tile.empty() ? 0 : group_tile[g]].push_back(c);
     }
-    std::vector<cl_uint2> out(chains, cl_uint2{{rounds_.empty() ? 0 : rounds_.front(), 0}});
     const std::uint32_t first_round = rounds_.empty() ? 0 : rounds_.front();
+    std::vector<cl_uint2> out(chains, cl_uint2{{first_round, 0}});
     for (std::uint32_t t = 0; t < tiles; ++t) {
         if (tile_chains[t].empty()) continue;
         const std::uint32_t u = rng_u32(rng_key(seed, t, first_round), 0);
-        std::uint64_t in_tile = 0;
-        for (std::size_t j = tile_begin_[t]; j < tile_begin_[t + 1]; ++j)
-            each_in_pixel(order_[j], true,
-                          [&](std::uint32_t, std::uint32_t, std::uint64_t) { ++in_tile; });
-        if (in_tile > 0)
-            draw_tile(tile_begin_[t], tile_begin_[t + 1], u, tile_chains[t], out);
-        else
+        if (!draw_tile(tile_begin_[t], tile_begin_[t + 1], u, tile_chains[t], out))
             draw_tile(0, order_.size(), u, tile_chains[t], out);
     }
     return out;

@@ -49,7 +49,6 @@ class StartPicks {
     std::vector<cl_uint2> draw(const std::vector<std::uint32_t>& group_tile,
                                std::uint32_t group_chains, std::uint32_t chains,
                                std::uint64_t seed) const;
-    std::uint64_t samples() const;
 
   private:
     struct Sample {
@@ -60,8 +59,9 @@ class StartPicks {
     // order; weight 1 where `uniform`.
     template <class F> void each_in_pixel(std::uint32_t pixel, bool uniform, F f) const;
     // The picks of `chains` (indices into `out`) from the samples of the
-    // order's pixels [begin, end) under the uniform number u.
-    void draw_tile(std::size_t begin, std::size_t end, std::uint32_t u,
+    // order's pixels [begin, end) under the uniform number u; false, and no
+    // pick, if there are no samples there.
+    bool draw_tile(std::size_t begin, std::size_t end, std::uint32_t u,
                    const std::vector<std::uint32_t>& chains, std::vector<cl_uint2>& out) const;
 
     BurnInFilm film_;
