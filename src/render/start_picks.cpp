@@ -35,11 +35,11 @@ std::vector<std::uint32_t> start_pick_order(std::uint32_t width, std::uint32_t h
                                             const StrataGrid& grid) {
     std::vector<std::uint32_t> order(std::size_t(width) * height);
     std::iota(order.begin(), order.end(), 0u);
-    auto key = [&](std::uint32_t p) {
-        return std::make_pair(grid.pixel_tile[p], morton(p % width, p / width));
-    };
+    std::vector<std::pair<std::uint32_t, std::uint64_t>> key(order.size());
+    for (std::uint32_t p : order)
+        key[p] = std::make_pair(grid.pixel_tile[p], morton(p % width, p / width));
     std::sort(order.begin(), order.end(),
-              [&](std::uint32_t a, std::uint32_t b) { return key(a) < key(b); });
+              [&](std::uint32_t a, std::uint32_t b) { return key[a] < key[b]; });
     return order;
 }
 
