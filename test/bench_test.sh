@@ -69,11 +69,12 @@ truth stuck_error_methods [ "$(cut -d, -f1 "$R/stuck/error.csv" | tail -n +2 | s
 truth stuck_counts_rows rows "$R/stuck/stuck.csv" 2
 # A check that needs MLT steps to run within the quick mode's few seconds:
 # on Mesa's llvmpipe a mutation costs 12 times what it costs PoCL
-# (doc/devices.md), the burn-in takes all of that time and no step runs, so
-# there they are skipped, and say so.
+# (doc/devices.md), the burn-in takes all of that time and a render gets
+# few steps (at least the one that --time grants after it), so there they are
+# skipped, and say so.
 slow=
 if "$BIN" devices | head -n 1 | grep -q llvmpipe; then
-    slow="device 0 is llvmpipe: no MLT step runs in the quick mode's time"
+    slow="device 0 is llvmpipe: few MLT steps run in the quick mode's time"
 fi
 # needs_steps NAME COMMAND...: truth, or a skip with its reason on a slow device
 needs_steps() {

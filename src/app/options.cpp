@@ -54,7 +54,8 @@ const std::vector<Flag> kRenderFlags = {
      nullptr, [] { return std::to_string(kDefaultSpp); }},
     {"--time", "SECONDS", Section::Render,
      [](RenderOptions& o, const FlagValue& v) { o.time_s = v.positive("number of seconds"); },
-     "render for this long instead of a sample count"},
+     "render for this long instead of a sample count (at least one pass: for mlt, one "
+     "step after the burn-in)"},
     {"--seed", "S", Section::Render, [](RenderOptions& o, const FlagValue& v) { o.seed = v.u64(); },
      "seed of all random numbers (default {default}); same seed, same image", 0, 0, nullptr,
      [] { return std::to_string(RenderOptions().seed); }},

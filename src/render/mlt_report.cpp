@@ -54,10 +54,15 @@ std::vector<std::string> mlt_notes(const MltReport& r) {
                       static_cast<unsigned long long>(s.longest_run));
         out.push_back(buf);
     }
-    if (r.prepared && r.burn_in_lit && r.iterations == 0)
-        out.push_back("no MLT step ran in the time given: burn-in took " +
-                      std::to_string(r.prepare_seconds) +
-                      " s; give more time or fewer --burn-in-iters");
+    if (r.prepared && r.burn_in_lit && r.steps == r.iterations && r.steps < kFewSteps) {
+        char buf[240];
+        std::snprintf(buf, sizeof buf,
+                      "only %u MLT step(s) ran, after a burn-in of %.2f s: the chains' part "
+                      "of the image rests on them alone; give more time or fewer "
+                      "--burn-in-iters",
+                      r.steps, r.prepare_seconds);
+        out.push_back(buf);
+    }
     return out;
 }
 

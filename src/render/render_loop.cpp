@@ -56,9 +56,12 @@ LoopResult render_loop(Integrator& m, const LoopLimits& limits, ConvergenceLog* 
         if (log && log->due(now) && m.spp_done() > 0)
             clock.pause_for([&] { log->record(now, m.spp_done(), m.image()); });
         // Every rank votes once per pass: with --spp when its share is done,
-        // with --time rank 0's clock decides for all.
+        // with --time rank 0's clock decides for all, once every rank has
+        // rendered a pass: a prepare (MLT's burn-in) that outlasts --time
+        // must not leave the image without its units.
         bool finished = m.finished() || (limits.spp && done >= target);
-        bool vote = finished || (!limits.spp && (ranks.rank() != 0 || now >= *limits.time_s));
+        bool vote =
+            finished || (!limits.spp && (ranks.rank() != 0 || (done > 0 && now >= *limits.time_s)));
         if (ranks.any(interrupt_requested())) {
             r.interrupted = true;
             break;

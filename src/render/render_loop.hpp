@@ -30,8 +30,9 @@ struct LoopResult {
 
 // `log` may be null. With several ranks, every rank runs its share in
 // lockstep passes: a signal on any rank stops all after the current pass,
-// --time stops all when rank 0's time is up, --spp when every rank's share
-// is done (a rank done early waits).
+// --time stops all when rank 0's time is up and each rank has rendered at
+// least one pass, --spp when every rank's share is done (a rank done early
+// waits).
 LoopResult render_loop(Integrator& method, const LoopLimits& limits, ConvergenceLog* log,
                        Progress& progress, RankGroup& ranks);
 
