@@ -54,7 +54,7 @@ std::vector<std::string> mlt_notes(const MltReport& r) {
                       static_cast<unsigned long long>(s.longest_run));
         out.push_back(buf);
     }
-    if (r.prepared && r.burn_in_lit && r.steps == r.iterations && r.steps < kFewSteps) {
+    if (r.prepared && r.burn_in_lit && r.split != Split::All && r.steps < kFewSteps) {
         char buf[240];
         std::snprintf(buf, sizeof buf,
                       "only %u MLT step(s) ran, after a burn-in of %.2f s: the chains' part "

@@ -44,7 +44,7 @@ struct MltReport {
 std::string mlt_summary(const MltReport& r);
 // What the user should know: dropped samples, a split that ran no chain, an
 // unlit burn-in, light behind glass the burn-in missed, an uncertain b,
-// stuck chains, no step in the time given.
+// stuck chains, few steps after the burn-in.
 std::vector<std::string> mlt_notes(const MltReport& r);
 
 } // namespace smallmlt
