@@ -4,6 +4,12 @@
 
 namespace smallmlt {
 
+namespace {
+// Below this many steps a render says that its chains' part rests on them
+// (a burn-in that took most of --time).
+constexpr std::uint32_t kFewSteps = 4;
+} // namespace
+
 std::vector<std::string> mlt_notes(const MltReport& r) {
     std::vector<std::string> out;
     const MltStats& s = r.stats;

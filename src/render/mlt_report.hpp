@@ -14,10 +14,6 @@ namespace smallmlt {
 // whole image; its error is not reduced by running the chains longer).
 constexpr double kMaxBRelError = 0.01;
 
-// Below this many steps a render says that its chains' part rests on them
-// (a burn-in that took most of --time).
-constexpr std::uint32_t kFewSteps = 4;
-
 struct MltReport {
     MltStats stats;
     double b = 0, b_rel_error = 0;
