@@ -1,8 +1,7 @@
-// Burn-in by OMC: sample keys are distinct, chains start on the paths their
-// picks found and where the light is, which removes most of the startup
-// bias, and the burn-in's per-pixel variance is the pixels' sample variance.
+// Burn-in by OMC: chains start on the paths their picks found and where the
+// light is, which removes most of the startup bias, and the burn-in's
+// per-pixel variance is the pixels' sample variance.
 // The picks themselves: test_start_picks.cpp.
-#include "base/rng.hpp"
 #include "image/image_metrics.hpp"
 #include "render/mlt.hpp"
 #include "test_support.hpp"
@@ -12,40 +11,14 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
-#include <random>
 #include <set>
 
 using namespace smallmlt;
 
-TEST(OmcKeys, DistinctOverTheWholeCommandLineRange) {
-    const std::uint32_t max_threads = 1u << 26, max_rounds = (1u << 16) + 1;
-    std::vector<std::uint32_t> rounds = {
-        0, 1, 2, 63, 64, 65, 127, 128, 4096, max_rounds - 2, max_rounds - 1};
-    std::vector<std::uint32_t> indices = {
-        0, 1, 2, 1000, 65535, 65536, max_threads / 2, max_threads - 2, max_threads - 1};
-    std::mt19937 rng(4);
-    for (int k = 0; k < 200; ++k) {
-        rounds.push_back(rng() % max_rounds);
-        indices.push_back(rng() % max_threads);
-    }
-    std::vector<std::uint64_t> keys;
-    std::set<std::pair<std::uint32_t, std::uint32_t>> samples;
-    for (std::uint32_t r : rounds)
-        for (std::uint32_t i : indices)
-            if (samples.insert({r, i}).second) keys.push_back(omc_sample_key(77, r, i));
-    std::sort(keys.begin(), keys.end());
-    std::size_t repeats =
-        keys.size() - std::size_t(std::unique(keys.begin(), keys.end()) - keys.begin());
-    EXPECT_EQ(repeats, 0u) << "of " << samples.size() << " OMC samples, " << repeats
-                           << " repeat the key of another";
-    EXPECT_EQ(omc_round_seed(77, 0), derive_seed(77, 0));
-}
-
 // Every chain starts on the path its pick found lit: mlt_init regenerates,
-// from its round's seed (made on the device from the pick's round) and its
-// index, the sample burnin_pick chose (1000 chains over 7 rounds), at the
-// film position the burn-in gave that sample (in the pixel that
-// burn_in_film_sample names for round x threads + index).
+// from the pick's round and index, the sample the draw chose (1000 chains
+// over 7 rounds), in the pixel that burn_in_film_sample names for round x
+// threads + index.
 TEST(BurnIn, ChainsStartOnThePathsTheirPicksFound) {
     DeviceScene ds = prepare_scene(test::scene("cornell-water", 32, 32));
     MltOptions opt = test::plain_mlt();

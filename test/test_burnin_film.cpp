@@ -5,6 +5,7 @@
 // (a (0,4,2)-net in every aligned block of 16); and a render's burn-in lands
 // where expected, with its OMC part going on after it.
 #include "base/rng.hpp"
+#include "burnin_order.h"
 #include "render/burn_in.hpp"
 #include "render/mlt.hpp"
 #include "test_support.hpp"
@@ -12,6 +13,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <vector>
 
@@ -28,11 +30,22 @@ std::vector<std::uint64_t> counts(const BurnInFilm& f, std::uint32_t pixels,
     return n;
 }
 
+// The known target's options with three burn-in rounds of `threads`
+// samples and `split`.
+MltOptions three_rounds(std::uint32_t threads, Split split) {
+    MltOptions opt = test::plain_mlt();
+    opt.threads = threads;
+    opt.burn_in_iters = 3;
+    opt.split = split;
+    return opt;
+}
+
 } // namespace
 
-// Shares differ by at most one sample, every (pixel, Sobol number) is used
-// once and lies below burn_in_film_end, and fewer samples than pixels still
-// spread over the whole image (each quarter of the rows gets a quarter).
+// Shares differ by at most one sample, each pixel's Sobol numbers are
+// 0, 1, 2, ... without a gap or a repeat up to where burn_in_omc_start has
+// the OMC part go on, and fewer samples than pixels still spread over the
+// whole image (each quarter of the rows gets a quarter).
 TEST(BurnInFilm, EveryPixelGetsItsShare) {
     struct Case {
         std::uint32_t width, height, per_round, rounds;
@@ -46,15 +59,19 @@ TEST(BurnInFilm, EveryPixelGetsItsShare) {
             std::vector<std::uint64_t> n = counts(f, pixels, samples);
             auto [lo, hi] = std::minmax_element(n.begin(), n.end());
             EXPECT_LE(*hi - *lo, 1u) << c.width << "x" << c.height << " seed " << seed;
+            const SequenceStart start = burn_in_omc_start(f, pixels, samples);
             std::vector<std::vector<bool>> used(pixels);
-            const std::uint32_t end = burn_in_film_end(f, pixels, samples);
+            for (std::uint32_t p = 0; p < pixels; ++p)
+                used[p].assign(start.at(pixels, p), false);
             for (std::uint64_t g = 0; g < samples; ++g) {
                 auto [p, k] = burn_in_film_sample(f, pixels, g);
-                ASSERT_LT(k, end) << "sample " << g;
-                used[p].resize(end, false);
+                ASSERT_LT(k, used[p].size()) << "sample " << g << ", pixel " << p;
                 ASSERT_FALSE(used[p][k]) << "pixel " << p << " number " << k << " twice";
                 used[p][k] = true;
             }
+            for (std::uint32_t p = 0; p < pixels; ++p)
+                ASSERT_EQ(std::count(used[p].begin(), used[p].end(), false), 0)
+                    << "pixel " << p << ": a number before the OMC part's is unused";
         }
     }
     // 2,048 samples over 16,384 pixels: each quarter of the rows gets
@@ -116,18 +133,59 @@ TEST(BurnInFilm, DeviceSamplesArePixelsSobolPoints) {
 
 // A render's burn-in (3 rounds of 256 samples over 13 x 7 pixels) lands
 // where burn_in_film_sample puts it, round by round, and the split's OMC part
-// begins each pixel's sequence after the burn-in's numbers.
+// goes on with each pixel's sequence at the number after the burn-in's last.
 TEST(BurnInFilm, RenderBurnInLandsWhereExpected) {
     DeviceScene ds = prepare_scene(test::scene("cornell", 13, 7));
-    MltOptions opt = test::plain_mlt();
-    opt.threads = 256;
-    opt.burn_in_iters = 3;
-    opt.split = Split::Visible;
-    MltRenderer mlt(test::cl(), ds, opt);
+    MltRenderer mlt(test::cl(), ds, three_rounds(256, Split::Visible));
     mlt.prepare();
     const std::uint32_t pixels = 13 * 7;
     const std::uint64_t samples = 3 * 256;
-    EXPECT_EQ(mlt.burn_in_parts().count, counts(mlt.burn_in_film(), pixels, samples));
-    EXPECT_EQ(mlt.omc_first_sample(), burn_in_film_end(mlt.burn_in_film(), pixels, samples));
-    EXPECT_GT(mlt.omc_first_sample(), 0u);
+    const std::vector<std::uint64_t> n = counts(mlt.burn_in_film(), pixels, samples);
+    EXPECT_EQ(mlt.burn_in_parts().count, n);
+    const PtNumbering* omc = mlt.omc_numbering();
+    ASSERT_NE(omc, nullptr);
+    EXPECT_EQ(omc->stride, 1u);
+    for (std::uint32_t p = 0; p < pixels; ++p)
+        EXPECT_EQ(omc->offset + burnin_order_late(&omc->late, pixels, p), n[p]) << "pixel " << p;
+}
+
+// The burn-in's samples are the path tracer's: with every light left to
+// per-pixel samples (Split::All), an MLT render of cornell (16 x 12 pixels,
+// 3 rounds of 96 samples: some pixels get one more than others) is, pixel by
+// pixel, the Sobol path tracer's image of its OMC part's seed at the
+// pixel's own count of samples, up to float rounding and the film numbers'
+// grid (the burn-in's is the film's, the path tracer's the pixel's).
+// Random numbers past the film position differ by a sample's noise.
+TEST(BurnInFilm, BurnInSamplesAreThePathTracers) {
+    DeviceScene ds = prepare_scene(test::scene("cornell", 16, 12));
+    MltOptions opt = three_rounds(96, Split::All);
+    opt.seed = 5;
+    MltRenderer mlt(test::cl(), ds, opt);
+    mlt.prepare();
+    mlt.step(8);
+    const std::uint32_t pixels = 16 * 12, spp = mlt.omc_spp();
+    ASSERT_GT(spp, 0u);
+    const Image img = mlt.part_image(MltRenderer::Part::Omc);
+    const PtNumbering* omc = mlt.omc_numbering();
+    ASSERT_NE(omc, nullptr);
+    const std::uint32_t q = 3 * 96 / pixels;
+    const Image pt[2] = {test::render_pt(ds, omc->seed, q + spp),
+                         test::render_pt(ds, omc->seed, q + spp + 1)};
+    int late = 0, off = 0;
+    double worst = 0;
+    for (std::uint32_t p = 0; p < pixels; ++p) {
+        const std::uint32_t l = burnin_order_late(&omc->late, pixels, p);
+        late += int(l);
+        for (int c = 0; c < 3; ++c) {
+            const double want = pt[l].rgb[3 * p + c], got = img.rgb[3 * p + c];
+            const double rel = std::abs(got - want) / std::max(want, 1e-3);
+            worst = std::max(worst, rel);
+            off += rel > 1e-4;
+        }
+    }
+    std::printf("%d of %u pixels late, %d of %u values off by more than 1e-4, worst %.3g\n", late,
+                pixels, off, 3 * pixels, worst);
+    EXPECT_GT(late, 0);
+    EXPECT_LT(late, int(pixels));
+    EXPECT_EQ(off, 0);
 }

@@ -84,17 +84,17 @@ TEST(OpenCl, EveryArgumentOfAKernelIsSet) {
     SceneBuffers scene(test::cl(), ds);
     ClBuffer accum(test::cl(), CL_MEM_READ_WRITE, 64 * 3 * sizeof(float));
     std::string few = error_of([&] { k.set_args(scene, cl_ulong(1)); });
-    EXPECT_NE(few.find("kernel pt_render takes 18 arguments, 10 were set"), std::string::npos)
+    EXPECT_NE(few.find("kernel pt_render takes 19 arguments, 10 were set"), std::string::npos)
         << few;
     std::string many = error_of([&] {
-        k.set_args(scene, cl_ulong(1), cl_uint(0), cl_uint(1), cl_uint(0), cl_uint(1), cl_uint(0),
-                   cl_uint(64), accum, accum, cl_uint(0));
+        k.set_args(scene, cl_ulong(1), cl_uint(0), cl_uint(1), cl_uint(0), cl_uint(1), LatePixels{},
+                   cl_uint(0), cl_uint(64), accum, accum, cl_uint(0));
     });
     // (the driver may refuse the extra argument's index first)
     EXPECT_NE(many.find("pt_render"), std::string::npos) << many;
     EXPECT_EQ(error_of([&] {
                   k.set_args(scene, cl_ulong(1), cl_uint(0), cl_uint(1), cl_uint(0), cl_uint(1),
-                             cl_uint(0), cl_uint(64), accum, accum);
+                             LatePixels{}, cl_uint(0), cl_uint(64), accum, accum);
               }),
               "");
 }

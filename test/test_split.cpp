@@ -296,8 +296,8 @@ TEST(Split, LightBehindGlassIsWhatSmoothTransmittersBlock) {
 // The chains beside the OMC part on water-spark (a 1 cm light of radiance
 // 1e5 seen directly, scenes/generate.py), with the defaults but for the
 // threads, at a seed whose burn-in found none of the rare paths through the
-// water to the light (at 16,384 threads seeds 1 and 2 found some, 3 none):
-// its MLT part's relative variance (0.51) says path tracing renders it well,
+// water to the light (at 16,384 threads seeds 3 and 4 found some, 1 and 2
+// none): its MLT part's relative variance (0.52) says path tracing renders it well,
 // but half of the light its paths aimed at lay behind the water, and
 // --split auto runs the chains. They run, and each step's OMC part traces
 // no more rays than they do, so that no step outlasts --time by more than
@@ -313,7 +313,7 @@ TEST(Split, ChainsRunBesideABrightLightSeenDirectly) {
     MltOptions opt; // the command line's defaults
     ASSERT_EQ(opt.split, Split::Auto);
     opt.threads = 16384;
-    opt.seed = 3;
+    opt.seed = 1;
     MltRenderer mlt(test::cl(), ds, opt);
     mlt.prepare();
     std::printf("r %.3g, light behind glass %.1f%%; ", mlt.mlt_relative_variance(),

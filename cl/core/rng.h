@@ -33,10 +33,4 @@ inline u32 rng_u32(u64 key, u32 dim) {
     return (u32)(rng_mix64(key + (u64)(dim + 1u) * 0x9E3779B97F4A7C15UL) >> 32);
 }
 
-/* The seed of burn-in round `round` (src/render/burn_in.hpp): its sample i
- * is the path of key rng_key(rng_round_seed(omc_seed, round), i, 0). */
-inline u64 rng_round_seed(u64 omc_seed, u32 round) {
-    return rng_derive(omc_seed, round);
-}
-
 #endif

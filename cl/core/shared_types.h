@@ -244,11 +244,11 @@ typedef struct {
     u32 columns;
 } TargetCells;
 
-/* Where the burn-in's samples lie on the film (cl/sampling/burnin_film.cl): sample
- * g = round * per_round + index, with h = g + offset, is Sobol sample
- * h / P of pixel ((h mod P) * step) mod P (P pixels, step coprime with P),
- * in the Sobol sequences of seed (seed_hi, seed_lo): the OMC part's. 20
- * bytes. */
+/* Where the burn-in's samples lie on the film (cl/core/burnin_order.h,
+ * cl/sampling/burnin_film.cl): sample g = round * per_round + index, with
+ * h = g + offset, lies in pixel ((h mod P) * step) mod P (P pixels, step
+ * coprime with P), in the Sobol sequences of seed (seed_hi, seed_lo): the
+ * OMC part's. 20 bytes. */
 typedef struct {
     u32 seed_lo;
     u32 seed_hi;
@@ -256,6 +256,16 @@ typedef struct {
     u32 step;
     u32 per_round;
 } BurnInFilm;
+
+/* The pixels whose Sobol sequences the path tracer begins one number later
+ * (cl/kernels/pt.cl): those MLT's burn-in gave one sample more
+ * (cl/core/burnin_order.h). Pixel p is one if
+ * ((p * inverse) mod P + P - offset) mod P < count; count 0: none. 12 bytes. */
+typedef struct {
+    u32 offset;
+    u32 inverse;
+    u32 count;
+} LatePixels;
 
 /* A stratum of the film for MLT's chains (cl/sampling/strata.cl): the
  * pixels [x0, x0 + w) x [y0, y0 + h). A chain of the stratum reads its film
@@ -302,6 +312,7 @@ typedef struct {
     S(TargetCells, 8) F(TargetCells, columns, 4)                                                   \
     S(BurnInFilm, 20) F(BurnInFilm, seed_hi, 4) F(BurnInFilm, offset, 8)                          \
         F(BurnInFilm, step, 12) F(BurnInFilm, per_round, 16)                                       \
+    S(LatePixels, 12) F(LatePixels, inverse, 4) F(LatePixels, count, 8)                            \
     S(FilmTile, 32) F(FilmTile, y0, 4) F(FilmTile, w, 8) F(FilmTile, h, 12) F(FilmTile, ox, 16)   \
         F(FilmTile, oy, 20) F(FilmTile, sx, 24) F(FilmTile, sy, 28)
 /* clang-format on */

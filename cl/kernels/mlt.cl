@@ -4,21 +4,18 @@
  * in mlt_step.cl, the film in film.cl. Every kernel runs in work-groups of
  * MLT_GROUP and counts into its group's row of stats. */
 
-/* The target I of burn-in sample i of round `round`: the OMC path of key
- * rng_key(seed, i, 0) (seed: the round's) at the film position burnin_film
- * gives it. The normalization b = E[I] is their mean. With MLT_BURN_IN_SAMPLES (a split,
- * or the two-stage target) the path's parts go to omc[2 i] (xyz: the OMC
- * part, RGB; w: the pixel's bits) and omc[2 i + 1] (xyz: the MLT part; w:
- * its light behind smooth transmitters, cl/path/path.cl), so that the
- * burn-in's paths also render the OMC part, and the host can tell how well
- * path tracing renders the MLT part
- * (src/render/split.hpp) and weigh the two-stage target's cells
- * (src/render/target.hpp). The host adds them in sample order: no atomics,
+/* The target I of burn-in sample i of round `round`: the path of the
+ * pixel's Sobol numbers burnin_sample gives it. The normalization b = E[I] is their mean. With
+ * MLT_BURN_IN_SAMPLES (a split, or the two-stage target) the path's parts go to omc[2 i] (xyz: the
+ * OMC part, RGB; w: the pixel's bits) and omc[2 i + 1] (xyz: the MLT part; w: its light behind
+ * smooth transmitters, cl/path/path.cl), so that the burn-in's paths also render the OMC part, and
+ * the host can tell how well path tracing renders the MLT part (src/render/split.hpp) and weigh the
+ * two-stage target's cells (src/render/target.hpp). The host adds them in sample order: no atomics,
  * and the same sums every time. */
 __kernel void mlt_luminance(SCENE_ARGS, __global const float* weight, const TargetCells cells,
-                            const BurnInFilm film, __global uint* state, const ulong seed,
-                            const uint round, const uint count, __global float* lum,
-                            __global float4* omc, __global ulong* stats) {
+                            const BurnInFilm film, __global uint* state, const uint round,
+                            const uint count, __global float* lum, __global float4* omc,
+                            __global ulong* stats) {
     __local uint l_count[MLT_COUNTS];
     uint i = get_global_id(0), nonfinite = 0u;
     mlt_zero_counts(l_count);
@@ -26,9 +23,8 @@ __kernel void mlt_luminance(SCENE_ARGS, __global const float* weight, const Targ
     if (i < count) {
         SceneView sc = SCENE_VIEW();
         MltTarget target = mlt_target(weight, cells, &frame, 0.0f);
-        uint2 at = burnin_film(&film, &frame, (ulong)round * film.per_round + i);
-        SampleSource src =
-            smp_chain_start(state, 0u, 1u, rng_key(seed, i, 0u), at, strata_whole(&frame));
+        BurnInSample b = burnin_sample(&film, &frame, (ulong)round * film.per_round + i);
+        SampleSource src = smp_chain_start(state, 0u, 1u, b, b.film, strata_whole(&frame));
         EvalResult s = mlt_checked(eval_state(&sc, &frame, &src), &nonfinite);
         lum[i] = path_luminance(s.f) * mlt_weight(&target, s.pixel);
 #ifdef MLT_BURN_IN_SAMPLES
@@ -39,13 +35,12 @@ __kernel void mlt_luminance(SCENE_ARGS, __global const float* weight, const Targ
     mlt_publish_nonfinite(stats, l_count, nonfinite);
 }
 
-/* Starts chain c at burn-in sample picks[c] = (round r, index i): the path
- * of key rng_key(rng_round_seed(omc_seed, r), i, 0) at its film position, as
- * mlt_luminance drew it, read as numbers of the chain's tile (a fresh start
- * outside the tile is moved to its edge). */
+/* Starts chain c at burn-in sample picks[c] = (round r, index i), the path
+ * mlt_luminance drew, its film position read as numbers of the chain's tile
+ * (a fresh start outside the tile is moved to its edge). */
 __kernel void mlt_init(SCENE_ARGS, __global const float* weight, const TargetCells cells,
                        const BurnInFilm film, STRATA_ARGS, __global uint* state,
-                       __global ChainValue* values, const uint num_chains, const ulong omc_seed,
+                       __global ChainValue* values, const uint num_chains,
                        __global const uint2* picks, __global ulong* stats) {
     __local uint l_count[MLT_COUNTS];
     uint c = get_global_id(0), nonfinite = 0u;
@@ -56,10 +51,9 @@ __kernel void mlt_init(SCENE_ARGS, __global const float* weight, const TargetCel
         MltTarget target = mlt_target(weight, cells, &frame, 0.0f);
         MltStratum stratum = MLT_STRATUM(c);
         uint2 pick = picks[c];
-        ulong round_seed = rng_round_seed(omc_seed, pick.x);
-        uint2 at = burnin_film(&film, &frame, (ulong)pick.x * film.per_round + pick.y);
-        SampleSource src = smp_chain_start(state, c, num_chains, rng_key(round_seed, pick.y, 0u),
-                                           strata_local(&stratum.tile, &frame, at), stratum.tile);
+        BurnInSample b = burnin_sample(&film, &frame, (ulong)pick.x * film.per_round + pick.y);
+        SampleSource src = smp_chain_start(
+            state, c, num_chains, b, strata_local(&stratum.tile, &frame, b.film), stratum.tile);
         float w;
         EvalResult s = mlt_evaluate(&sc, &frame, &src, &target, &nonfinite, &w);
         smp_commit(&src, s.bounces);

@@ -1,9 +1,11 @@
 /* Entry point of the path tracer (ordinary Monte Carlo). One work-item per
  * pixel; its k-th sample of pixel p reads the numbers of
- * smp_pixel(seed, p, offset + k * stride) (cl/sampling/sample_sobol.cl or
- * cl/sampling/sample_omc.cl; offset 0 and stride 1 in one process, rank r of R
- * ranks takes offset r and stride R), so an image depends only on the seed
- * and the sample count, not on how samples are split into passes. The
+ * smp_pixel(seed, p, offset + k * stride + late) (cl/sampling/sample_sobol.cl
+ * or cl/sampling/sample_omc.cl; offset 0 and stride 1 in one process, rank r
+ * of R ranks takes offset r and stride R; late is 1 for the pixels of `late`,
+ * whose sequence MLT's burn-in took one number further), so an image depends
+ * only on the seed and the sample count, not on how samples are split into
+ * passes. The
  * film is in bands (src/device/memory_plan.hpp): this run covers pixels
  * first .. first + count - 1, and `accum` holds their (sum R, sum G, sum B).
  * Each work-group adds its rays and dropped non-finite samples to its row of
@@ -21,8 +23,9 @@
 #endif
 
 __kernel void pt_render(SCENE_ARGS, const ulong seed, const uint first_sample, const uint spp,
-                        const uint offset, const uint stride, const uint first, const uint count,
-                        __global float* accum, __global ulong* stats) {
+                        const uint offset, const uint stride, const LatePixels late,
+                        const uint first, const uint count, __global float* accum,
+                        __global ulong* stats) {
     __local uint l_rays, l_nonfinite;
     if (get_local_id(0) == 0u) l_rays = l_nonfinite = 0u;
     barrier(CLK_LOCAL_MEM_FENCE);
@@ -34,8 +37,9 @@ __kernel void pt_render(SCENE_ARGS, const ulong seed, const uint first_sample, c
         float px = (float)(pixel % frame.width), py = (float)(pixel / frame.width);
         float3 acc = vload3(i, accum);
         uint rays = 0u, nonfinite = 0u;
+        uint start = offset + burnin_order_late(&late, frame.width * frame.height, pixel);
         for (uint s = 0; s < spp; ++s) {
-            SampleSource src = smp_pixel(seed, pixel, offset + (first_sample + s) * stride);
+            SampleSource src = smp_pixel(seed, pixel, start + (first_sample + s) * stride);
             float fx = (px + smp_uniform(&src, 0u, layout_film(0u))) / (float)frame.width;
             float fy = (py + smp_uniform(&src, 0u, layout_film(1u))) / (float)frame.height;
             PathResult r = path_trace(&sc, &src, camera_ray(&frame, fx, fy));

@@ -34,6 +34,20 @@ inline LayoutSlot layout_slot(uint bounce, int slot) {
 }
 #endif
 
+/* The low-discrepancy pair number `at` of bounce `bounce` belongs to, and
+ * its component in it: pair 0 is the film position, and each bounce's slots
+ * (0,1), (2,3), ... (the BSDF pair, the light-sample pair, ...) are pairs
+ * 1 + bounce * ceil(LAYOUT_BOUNCE_DIMS / 2) onwards (sobol.cl). */
+inline uint layout_pair(uint bounce, LayoutSlot at, uint* component) {
+    if (at.dim < LAYOUT_CAMERA_DIMS) {
+        *component = at.dim;
+        return 0u;
+    }
+    uint slot = at.dim - LAYOUT_CAMERA_DIMS - bounce * LAYOUT_BOUNCE_DIMS;
+    *component = slot & 1u;
+    return 1u + bounce * ((LAYOUT_BOUNCE_DIMS + 1u) / 2u) + (slot >> 1);
+}
+
 /* v / 2^bits, exact in float for bits <= 24; 2^-bits is built from its
  * exponent bits, as bits is often not a compile-time constant. */
 inline float layout_unit(uint v, uint bits) {

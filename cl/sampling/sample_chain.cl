@@ -14,13 +14,14 @@
 #define SMP_REPLAY 0u /* y = x: evaluate the stored state */
 #define SMP_SMALL 1u  /* perturb every live number */
 #define SMP_LARGE 2u  /* draw every number afresh: the OMC path of `key` */
-#define SMP_START 3u  /* as SMP_LARGE, but the film position is `film` */
+#define SMP_START 3u  /* a burn-in sample: Sobol numbers, the film position `film` */
 
 typedef struct {
     __global uint* state;
     uint chain;
     uint stride; /* number of chains */
-    ulong key;
+    ulong key;   /* SMP_START: the pixel's Sobol scrambling key */
+    uint index;  /* SMP_START: the sample's index in the pixel's sequence */
     uint mode;
     uint alive;    /* live bounces of x */
     uint2 film;    /* SMP_START: the film numbers (LAYOUT_CAMERA_BITS wide) */
@@ -34,6 +35,7 @@ inline SampleSource smp_chain(__global uint* state, uint chain, uint stride, ulo
     s.chain = chain;
     s.stride = stride;
     s.key = key;
+    s.index = 0u;
     s.mode = mode;
     s.alive = alive;
     s.film = (uint2)(0u);
@@ -41,13 +43,24 @@ inline SampleSource smp_chain(__global uint* state, uint chain, uint stride, ulo
     return s;
 }
 
-/* A burn-in sample: the path of `key` at the film numbers `film` of tile
- * `tile` (burnin_film.cl; strata_local for a chain's own tile). */
-inline SampleSource smp_chain_start(__global uint* state, uint chain, uint stride, ulong key,
+/* Burn-in sample b (burnin_film.cl) at the film numbers `film` of tile
+ * `tile` (b.film, or strata_local of it for a chain's own tile): every other
+ * number is Sobol sample b.index of its pixel's sequence, as the OMC part's
+ * path tracer reads it (sample_sobol.cl). */
+inline SampleSource smp_chain_start(__global uint* state, uint chain, uint stride, BurnInSample b,
                                     uint2 film, FilmTile tile) {
-    SampleSource s = smp_chain(state, chain, stride, key, SMP_START, 0u, tile);
+    SampleSource s = smp_chain(state, chain, stride, b.key, SMP_START, 0u, tile);
+    s.index = b.index;
     s.film = film;
     return s;
+}
+
+/* Number `at` of a burn-in sample, as a 32-bit fraction: its pair's Sobol
+ * number. */
+inline uint smp_start_u32(const SampleSource* s, uint bounce, LayoutSlot at) {
+    uint component;
+    uint pair = layout_pair(bounce, at, &component);
+    return sobol_value(s->key, pair, s->index, component);
 }
 
 /* Small step of a `bits`-wide number, in grid steps (Kelemen et al. 2002):
@@ -101,7 +114,9 @@ inline uint smp_perturb_bits(uint v, uint r, uint bits, uint stretch) {
  * integer below 2^bits: the path reads it (smp_propose) and a commit stores
  * it, one value computed the same way both times. */
 inline uint smp_propose_bits(const SampleSource* s, uint bounce, LayoutSlot at) {
-    if (s->mode == SMP_START && at.dim < LAYOUT_CAMERA_DIMS) return at.dim ? s->film.y : s->film.x;
+    if (s->mode == SMP_START)
+        return at.dim < LAYOUT_CAMERA_DIMS ? (at.dim ? s->film.y : s->film.x)
+                                           : smp_start_u32(s, bounce, at) >> (32u - at.bits);
     uint r = rng_u32(s->key, at.dim);
     bool live = at.dim < LAYOUT_CAMERA_DIMS || bounce < s->alive;
     if (s->mode >= SMP_LARGE || !live) return r >> (32u - at.bits);
@@ -131,8 +146,10 @@ inline float smp_perturb(float x, uint r, uint stretch) {
 }
 
 inline float smp_propose(const SampleSource* s, uint bounce, LayoutSlot at) {
-    if (s->mode == SMP_START && at.dim < LAYOUT_CAMERA_DIMS)
-        return layout_unit(at.dim ? s->film.y : s->film.x, LAYOUT_CAMERA_BITS);
+    if (s->mode == SMP_START)
+        return at.dim < LAYOUT_CAMERA_DIMS
+                   ? layout_unit(at.dim ? s->film.y : s->film.x, LAYOUT_CAMERA_BITS)
+                   : (float)(smp_start_u32(s, bounce, at) >> 8) * (1.0f / 16777216.0f);
     uint r = rng_u32(s->key, at.dim);
     bool live = at.dim < LAYOUT_CAMERA_DIMS || bounce < s->alive;
     if (s->mode >= SMP_LARGE || !live) return (float)(r >> 8) * (1.0f / 16777216.0f);

@@ -2,21 +2,15 @@
 
 #include "base/color.hpp"
 #include "base/rng.hpp"
+#include "burnin_order.h"
 
 #include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <numeric>
+#include <utility>
 
 namespace smallmlt {
-
-std::uint64_t omc_round_seed(std::uint64_t omc_seed, std::uint32_t round) {
-    return rng_round_seed(omc_seed, round);
-}
-
-std::uint64_t omc_sample_key(std::uint64_t omc_seed, std::uint32_t round, std::uint32_t index) {
-    return rng_key(omc_round_seed(omc_seed, round), index, 0);
-}
 
 BurnInFilm burn_in_film(std::uint64_t pixel_seed, std::uint64_t offset_seed, std::uint32_t pixels,
                         std::uint32_t per_round) {
@@ -34,12 +28,38 @@ BurnInFilm burn_in_film(std::uint64_t pixel_seed, std::uint64_t offset_seed, std
 
 std::pair<std::uint32_t, std::uint32_t> burn_in_film_sample(const BurnInFilm& f,
                                                             std::uint32_t pixels, std::uint64_t g) {
-    std::uint64_t h = g + f.offset;
-    return {std::uint32_t((h % pixels) * f.step % pixels), std::uint32_t(h / pixels)};
+    return {burnin_order_pixel(&f, pixels, g), burnin_order_index(&f, pixels, g)};
 }
 
-std::uint32_t burn_in_film_end(const BurnInFilm& f, std::uint32_t pixels, std::uint64_t samples) {
-    return std::uint32_t((std::uint64_t(f.offset) + samples + pixels - 1) / pixels);
+namespace {
+
+// x with a x = 1 mod m (a coprime with m), by the extended Euclidean
+// algorithm.
+std::uint32_t inverse_mod(std::uint32_t a, std::uint32_t m) {
+    std::int64_t r0 = m, r1 = a % m, t0 = 0, t1 = 1;
+    while (r1 != 0) {
+        const std::int64_t q = r0 / r1;
+        r0 = std::exchange(r1, r0 - q * r1);
+        t0 = std::exchange(t1, t0 - q * t1);
+    }
+    return std::uint32_t(((t0 % m) + m) % m);
+}
+
+} // namespace
+
+std::uint32_t SequenceStart::at(std::uint32_t pixels, std::uint32_t p) const {
+    return first + burnin_order_late(&late, pixels, p);
+}
+
+SequenceStart burn_in_omc_start(const BurnInFilm& f, std::uint32_t pixels, std::uint64_t samples) {
+    // Pixel p's first sample is g0 = (p step^-1 - offset) mod P; it has had
+    // floor(n / P) samples, and one more if g0 < n mod P.
+    SequenceStart s;
+    s.first = std::uint32_t(samples / pixels);
+    s.late.offset = f.offset;
+    s.late.inverse = pixels > 1 ? inverse_mod(f.step % pixels, pixels) : 0;
+    s.late.count = std::uint32_t(samples % pixels);
+    return s;
 }
 
 void BurnInParts::add(const std::vector<float>& samples) {

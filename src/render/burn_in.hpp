@@ -12,14 +12,9 @@ namespace smallmlt {
 
 // OMC samples of a render are numbered by (round, index): round r < T of
 // burn-in (T = --burn-in-iters) draws indices 0..N-1, and the fresh starts of
-// --burn-in none are round T. Sample (r, i) is the path of key
-// rng_key(omc_round_seed(omc_seed, r), i, 0) (cl/core/rng.h), so keys stay
-// distinct however many rounds of however many threads run (a single 32-bit
-// number r * N + i would wrap at 2^32 and repeat samples), and mlt_init
-// regenerates a picked path from its round's seed and its index.
-std::uint64_t omc_round_seed(std::uint64_t omc_seed, std::uint32_t round);
-// The key of sample (round, index), as the kernels make it.
-std::uint64_t omc_sample_key(std::uint64_t omc_seed, std::uint32_t round, std::uint32_t index);
+// --burn-in none are round T. Sample (r, i) is number g = r N + i (64-bit,
+// so it does not wrap), and g fixes its pixel and its Sobol sample there
+// (burn_in_film_sample), from which mlt_init regenerates a picked path.
 
 // Where the burn-in's samples lie on the film (BurnInFilm,
 // cl/sampling/burnin_film.cl): the first Sobol samples of the pixels' sequences under
@@ -30,12 +25,20 @@ std::uint64_t omc_sample_key(std::uint64_t omc_seed, std::uint32_t round, std::u
 BurnInFilm burn_in_film(std::uint64_t pixel_seed, std::uint64_t offset_seed, std::uint32_t pixels,
                         std::uint32_t per_round);
 // The pixel and the Sobol sample number of burn-in sample g, as the kernels
-// place it.
+// place it (cl/core/burnin_order.h).
 std::pair<std::uint32_t, std::uint32_t> burn_in_film_sample(const BurnInFilm& f,
                                                             std::uint32_t pixels, std::uint64_t g);
-// The first Sobol sample number that no pixel reaches in the burn-in's first
-// `samples` samples: where the OMC part's path tracer begins.
-std::uint32_t burn_in_film_end(const BurnInFilm& f, std::uint32_t pixels, std::uint64_t samples);
+
+// Where the pixels' Sobol sequences stand after a burn-in: the OMC part's
+// path tracer goes on from number `first`, one later in the `late` pixels.
+struct SequenceStart {
+    std::uint32_t first = 0;
+    LatePixels late{};
+    // Pixel p's first number.
+    std::uint32_t at(std::uint32_t pixels, std::uint32_t p) const;
+};
+// After the burn-in's first `samples` samples.
+SequenceStart burn_in_omc_start(const BurnInFilm& f, std::uint32_t pixels, std::uint64_t samples);
 
 // What the burn-in's paths leave for a split (src/render/split.hpp): per
 // pixel and channel the sums of their OMC and MLT parts, and per pixel how

@@ -167,10 +167,10 @@ std::unique_ptr<OmcSchedule> MltRenderer::make_omc_part(Split split) const {
     // the fresh starts of --burn-in none, round T).
     const std::uint32_t rounds = std::max(1u, opt_.burn_in_iters);
     std::uint64_t samples = std::uint64_t(opt_.threads) * rounds + (opt_.burn_in ? 0 : chains());
-    std::uint32_t first = burn_in_film_end(burn_in_film_, std::uint32_t(pixels()), samples);
+    SequenceStart start = burn_in_omc_start(burn_in_film_, std::uint32_t(pixels()), samples);
     return std::make_unique<OmcSchedule>(
         std::make_unique<OmcPartTracer>(cl_, ds_, mlt_seed(opt_.seed, MltStream::Pixel),
-                                        OmcPart{split, &scene_, first}),
+                                        OmcPart{split, &scene_, start}),
         opt_.threads, opt_.omc_effort);
 }
 
@@ -178,10 +178,10 @@ void MltRenderer::restart_chains() {
     ++restarts_;
     // The restart's rounds on a film of their own: not the Sobol points
     // the OMC part goes on with.
-    BurnInFilm film = smallmlt::burn_in_film(
-        omc_round_seed(mlt_seed(opt_.seed, MltStream::Pixel), restarts_),
-        omc_round_seed(mlt_seed(opt_.seed, MltStream::FilmOffset), restarts_),
-        std::uint32_t(pixels()), opt_.threads);
+    BurnInFilm film =
+        smallmlt::burn_in_film(derive_seed(mlt_seed(opt_.seed, MltStream::Pixel), restarts_),
+                               derive_seed(mlt_seed(opt_.seed, MltStream::FilmOffset), restarts_),
+                               std::uint32_t(pixels()), opt_.threads);
     burn_in_.restart(plan_, scene_, target_, film,
                      MltBurnIn::Chains{state_, stats_, picks_, chains()}, grid_, strata_,
                      opt_.burn_in_iters);
@@ -189,9 +189,8 @@ void MltRenderer::restart_chains() {
 }
 
 void MltRenderer::init_chains(const BurnInFilm& film) {
-    cl_ulong omc_seed = mlt_seed(opt_.seed, MltStream::Omc);
-    k_init_.set_args(scene_, target_, film, strata_, state_, values_, cl_uint(chains()), omc_seed,
-                     picks_, stats_);
+    k_init_.set_args(scene_, target_, film, strata_, state_, values_, cl_uint(chains()), picks_,
+                     stats_);
     k_init_.enqueue(cl_, chains());
     cl_.finish("kernel mlt_init over " + std::to_string(chains()) + " chains");
 }

@@ -124,10 +124,11 @@ class MltRenderer : public Integrator {
     // B per tile (b with one tile), from the samples so far.
     std::vector<double> tile_b() const;
     // Where the burn-in's samples lie on the film, what they left per pixel,
-    // and the OMC part's first Sobol sample number (after the burn-in's).
+    // and the numbers of the OMC part's Sobol samples (after the burn-in's;
+    // none without an OMC part).
     const BurnInFilm& burn_in_film() const { return burn_in_film_; }
     const BurnInParts& burn_in_parts() const { return burn_in_.parts(); }
-    std::uint32_t omc_first_sample() const { return omc_ ? omc_->part().first_sample() : 0; }
+    const PtNumbering* omc_numbering() const { return omc_ ? &omc_->part().numbering() : nullptr; }
 
   private:
     // The pick's paths lie on `film`.

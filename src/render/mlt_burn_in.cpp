@@ -52,9 +52,8 @@ MltBurnIn::MltBurnIn(const ClContext& cl, cl_program program, const MltOptions& 
 // r.omc then exists.
 void MltBurnIn::sample_round(const Round& r, std::uint32_t it, bool parts, BurnInSums& s) {
     const std::uint32_t m = opt_.threads, pixels = std::uint32_t(r.grid.pixel_tile.size());
-    k_lum_.set_args(r.scene, r.target, r.film, r.chains.state,
-                    cl_ulong(omc_round_seed(mlt_seed(opt_.seed, MltStream::Omc), it)), cl_uint(it),
-                    cl_uint(m), r.lum, keeps_parts() ? r.omc : r.lum, r.chains.stats);
+    k_lum_.set_args(r.scene, r.target, r.film, r.chains.state, cl_uint(it), cl_uint(m), r.lum,
+                    keeps_parts() ? r.omc : r.lum, r.chains.stats);
     k_lum_.run(cl_, m);
     r.lum.read(cl_, host_.data());
     if (parts) {

@@ -6,11 +6,11 @@ namespace smallmlt {
 
 OmcPartTracer::OmcPartTracer(const ClContext& cl, const DeviceScene& ds, std::uint64_t seed,
                              const OmcPart& part)
-    : cl_(cl),
-      passes_(cl, ds, *part.scene, PtSampler::Sobol,
-              split_defines(part.split) + "#define PT_OMC_PART 1\n", {seed, part.first_sample, 1},
-              omc_scratch_pixels(std::uint64_t(ds.frame.width) * ds.frame.height),
-              plan_pt(ds, cl.device().max_alloc_bytes).bytes(Buffer::Stats)),
+    : cl_(cl), passes_(cl, ds, *part.scene, PtSampler::Sobol,
+                       split_defines(part.split) + "#define PT_OMC_PART 1\n",
+                       {seed, part.start.first, 1, part.start.late},
+                       omc_scratch_pixels(std::uint64_t(ds.frame.width) * ds.frame.height),
+                       plan_pt(ds, cl.device().max_alloc_bytes).bytes(Buffer::Stats)),
       scratch_(cl, CL_MEM_READ_WRITE, passes_.band_pixels() * kPtFilmPixelBytes),
       sums_(3 * passes_.pixels(), 0.0) {}
 

@@ -5,6 +5,7 @@
 // added into the host's sums, so the split adds little to the device's
 // memory (src/device/memory_plan.hpp).
 #pragma once
+#include "render/burn_in.hpp"
 #include "render/integrator.hpp"
 #include "render/pt_passes.hpp"
 #include "render/split.hpp"
@@ -19,7 +20,7 @@ struct OmcPart {
     const SceneBuffers* scene = nullptr;
     // Each pixel's first Sobol sample number: those before it are the
     // burn-in's (cl/sampling/burnin_film.cl).
-    std::uint32_t first_sample = 0;
+    SequenceStart start;
 };
 
 class OmcPartTracer {
@@ -31,7 +32,7 @@ class OmcPartTracer {
     // Adds n samples per pixel into the host's sums.
     void add_samples(std::uint32_t n);
     std::uint32_t spp() const { return passes_.spp(); }
-    std::uint32_t first_sample() const { return passes_.first_sample(); }
+    const PtNumbering& numbering() const { return passes_.numbering(); }
     std::uint64_t rays() const { return passes_.rays(); }
     std::uint64_t pixels() const { return passes_.pixels(); }
     // The samples per pixel (ints[0]) and the sums of R, G, B per pixel

@@ -43,8 +43,8 @@ void PtPasses::launch(std::uint32_t n, const std::function<const ClBuffer&(std::
     for (std::uint64_t first = 0, b = 0; first < pixels(); first += band_pixels_, ++b) {
         std::uint64_t size = std::min(band_pixels_, pixels() - first);
         kernel_.set_args(scene_, seed, first_sample, count, cl_uint(numbering_.offset),
-                         cl_uint(numbering_.stride), cl_uint(first), cl_uint(size), band(b),
-                         stats_);
+                         cl_uint(numbering_.stride), numbering_.late, cl_uint(first), cl_uint(size),
+                         band(b), stats_);
         kernel_.enqueue(cl_, size);
         after(first, size);
     }

@@ -7,6 +7,7 @@
 #include "device/ocl.hpp"
 #include "device/scene_buffers.hpp"
 #include "scene/device_scene.hpp"
+#include "shared_types.h"
 
 #include <cstdint>
 #include <functional>
@@ -24,12 +25,14 @@ constexpr PtSampler kDefaultPtSampler = PtSampler::Sobol; // the command line's 
 // Kernel files of the path-tracing program, in build order.
 std::vector<std::string> pt_program_files(PtSampler sampler);
 
-// Sample k of a pixel is number offset + k * stride of its sequence: rank r
-// of R renders offset r, stride R (src/render/ranks.hpp); the OMC part starts
-// after the burn-in's samples.
+// Sample k of a pixel is number offset + k * stride of its sequence, plus
+// one for the pixels of `late`: rank r of R renders offset r, stride R
+// (src/render/ranks.hpp); the OMC part starts after the burn-in's samples
+// (src/render/burn_in.hpp, burn_in_omc_start).
 struct PtNumbering {
     std::uint64_t seed = 0;
     std::uint32_t offset = 0, stride = 1;
+    LatePixels late{};
 };
 
 class PtPasses {
@@ -47,7 +50,7 @@ class PtPasses {
                      const std::function<void(std::uint64_t, std::uint64_t)>& after);
 
     std::uint32_t spp() const { return spp_; }
-    std::uint32_t first_sample() const { return numbering_.offset; }
+    const PtNumbering& numbering() const { return numbering_; }
     std::uint64_t pixels() const { return std::uint64_t(ds_.frame.width) * ds_.frame.height; }
     std::uint64_t band_pixels() const { return band_pixels_; }
     std::uint64_t rays() const;

@@ -87,8 +87,7 @@ __kernel void probe_small_step(__global const uint* r, __global const uint* v, c
 }
 
 /* The stretch of a film number's small step (x, then y) in each of n tiles. */
-__kernel void probe_film_stretch(__global const FilmTile* tiles, const uint n,
-                                 __global uint* out) {
+__kernel void probe_film_stretch(__global const FilmTile* tiles, const uint n, __global uint* out) {
     uint i = get_global_id(0);
     if (i >= n) return;
     SampleSource s;
@@ -148,7 +147,7 @@ __kernel void probe_burnin_film(const BurnInFilm film, const Frame frame, const 
                                 const uint n, __global uint* out) {
     uint i = get_global_id(0);
     if (i >= n) return;
-    uint2 v = burnin_film(&film, &frame, first + i);
+    uint2 v = burnin_sample(&film, &frame, first + i).film;
     out[3u * i] = v.x;
     out[3u * i + 1u] = v.y;
     FilmTile whole = strata_whole(&frame);
