@@ -4,13 +4,15 @@
  * in mlt_step.cl, the film in film.cl. Every kernel runs in work-groups of
  * MLT_GROUP and counts into its group's row of stats. */
 
-/* The target I of burn-in sample i of round `round`: the path of the
- * pixel's Sobol numbers burnin_sample gives it. The normalization b = E[I] is their mean. With
- * MLT_BURN_IN_SAMPLES (a split, or the two-stage target) the path's parts go to omc[2 i] (xyz: the
- * OMC part, RGB; w: the pixel's bits) and omc[2 i + 1] (xyz: the MLT part; w: its light behind
- * smooth transmitters, cl/path/path.cl), so that the burn-in's paths also render the OMC part, and
- * the host can tell how well path tracing renders the MLT part (src/render/split.hpp) and weigh the
- * two-stage target's cells (src/render/target.hpp). The host adds them in sample order: no atomics,
+/* The target I of burn-in sample i of round `round`: the path of the Sobol
+ * numbers burnin_sample gives it. The normalization b = E[I] is their mean.
+ * With MLT_BURN_IN_SAMPLES (a split, or the two-stage target) the path's
+ * parts go to omc[2 i] (xyz: the OMC part, RGB; w: the pixel's bits) and
+ * omc[2 i + 1] (xyz: the MLT part; w: its light behind smooth transmitters,
+ * cl/path/path.cl), so that the burn-in's paths also render the OMC part,
+ * and the host can tell how well path tracing renders the MLT part
+ * (src/render/split.hpp) and weigh the two-stage target's cells
+ * (src/render/target.hpp). The host adds them in sample order: no atomics,
  * and the same sums every time. */
 __kernel void mlt_luminance(SCENE_ARGS, __global const float* weight, const TargetCells cells,
                             const BurnInFilm film, __global uint* state, const uint round,

@@ -5,9 +5,9 @@
  * of R ranks takes offset r and stride R; late is 1 for the pixels of `late`,
  * whose sequence MLT's burn-in took one number further), so an image depends
  * only on the seed and the sample count, not on how samples are split into
- * passes. The
- * film is in bands (src/device/memory_plan.hpp): this run covers pixels
- * first .. first + count - 1, and `accum` holds their (sum R, sum G, sum B).
+ * passes. The film is in bands (src/device/memory_plan.hpp): this run
+ * covers pixels first .. first + count - 1, and `accum` holds their
+ * (sum R, sum G, sum B).
  * Each work-group adds its rays and dropped non-finite samples to its row of
  * stats (PT_STAT_*; first is a multiple of the group size).
  * Built with PT_OMC_PART, it renders only the OMC part of the split
