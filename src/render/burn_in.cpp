@@ -1,7 +1,6 @@
 #include "render/burn_in.hpp"
 
 #include "base/color.hpp"
-#include "base/rng.hpp"
 #include "burnin_order.h"
 
 #include <algorithm>
