@@ -21,7 +21,7 @@ endif
 
 DEB_PACKAGES := g++ make pocl-opencl-icd mesa-opencl-icd ocl-icd-opencl-dev opencl-headers \
                 libstb-dev gnuplot-nox libtinyobjloader-dev libtinyexr-dev libgtest-dev \
-                libopenmpi-dev openmpi-bin libpugixml-dev
+                libopenmpi-dev openmpi-bin libpugixml-dev python3
 # Mesa's OpenCL (rusticl) on the CPU (llvmpipe), as the only platform: the
 # compiler of Linux's small GPUs (doc/devices.md).
 RUSTICL_ENV  := OCL_ICD_VENDORS=/etc/OpenCL/vendors/rusticl.icd RUSTICL_ENABLE=swrast

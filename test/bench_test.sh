@@ -37,6 +37,21 @@ check time_to_error_by_hand 0 "h,pt,1.000,1.000,1.000,1.000,1.000,3.00,0.2 h,x,0
 awk -F, -v OFS=, 'NR > 1 { $8 = "" } 1' "$DIR/hand.csv" > "$DIR/nomask.csv"
 check time_to_error_without_mask 0 "h,pt,1.000,1.000,,1.000,1.000,3.00,0.2 h,x,0.500,0.833*,,2.833*,1.500*,3.00,0.2 " -- time_to_error "$DIR/nomask.csv"
 
+# bench/ideal_mse.py on 2x1 PFMs made by hand (little-endian floats): the
+# reference has grey pixels of 1 and 3; M = 1 puts 2 mutations over a
+# luminance of 4, so the ideal variances are 1 x 4 / (2 x 1) = 2 and
+# 9 x 4 / (2 x 3) = 6, mean 4. With the second pixel lit in the mask, both
+# go to the first: 1 x 1 / (2 x 1) = 0.5, and the image, off by 0.5 there,
+# has an mse_unlit of 0.25, half the ideal.
+f1='\000\000\200\077' f3='\000\000\100\100' f15='\000\000\300\077' f35='\000\000\140\100'
+pfm() { printf 'PF\n2 1\n-1\n'; for v in "$@"; do printf "$v$v$v"; done; }
+pfm "$f1" "$f3" > "$DIR/ideal_ref.pfm"
+pfm "$f15" "$f35" > "$DIR/ideal_img.pfm"
+pfm '\000\000\000\000' "$f1" > "$DIR/ideal_mask.pfm"
+check ideal_mse_by_hand 0 "mse 4" -- python3 bench/ideal_mse.py "$DIR/ideal_ref.pfm" 1
+check ideal_mse_masked_by_hand 0 "ideal_img.pfm: mse_unlit 0.25, 0.50 times the ideal" -- python3 bench/ideal_mse.py --mask "$DIR/ideal_mask.pfm" "$DIR/ideal_ref.pfm" 1 "$DIR/ideal_img.pfm"
+check ideal_mse_bad_count 1 "MUTATIONS_PER_PIXEL: 'x' is not a number" -- python3 bench/ideal_mse.py "$DIR/ideal_ref.pfm" x
+
 QUICK=1 RESULTS="$DIR/results" CACHE="$DIR/cache" sh bench/all.sh "$BIN" > "$DIR/all.log" 2>&1
 rc=$?
 truth bench_quick_exit_0 [ "$rc" -eq 0 ]
