@@ -23,11 +23,18 @@ import sys
 
 def read_pfm(path):
     """(width, height, [r, g, b, r, g, b, ...]) of a colour PFM, rows as stored."""
-    with open(path, "rb") as f:
+    try:
+        f = open(path, "rb")
+    except OSError as e:
+        sys.exit(f"{path}: {e.strerror}")
+    with f:
         if f.readline().strip() != b"PF":
             sys.exit(f"{path}: not a colour PFM (header 'PF')")
-        width, height = map(int, f.readline().split())
-        scale = float(f.readline())
+        try:
+            width, height = map(int, f.readline().split())
+            scale = float(f.readline())
+        except ValueError:
+            sys.exit(f"{path}: the PFM's size or scale line is not numbers")
         count = width * height * 3
         data = f.read(4 * count)
         if len(data) != 4 * count:

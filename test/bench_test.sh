@@ -51,6 +51,8 @@ pfm '\000\000\000\000' "$f1" > "$DIR/ideal_mask.pfm"
 truth ideal_mse_by_hand [ "$(python3 bench/ideal_mse.py "$DIR/ideal_ref.pfm" 1)" = "ideal independent MLT at 1 mutations per pixel: mse 4" ]
 check ideal_mse_masked_by_hand 0 "ideal_img.pfm: mse_unlit 0.25, 0.50 times the ideal" -- python3 bench/ideal_mse.py --mask "$DIR/ideal_mask.pfm" "$DIR/ideal_ref.pfm" 1 "$DIR/ideal_img.pfm"
 check ideal_mse_bad_count 1 "MUTATIONS_PER_PIXEL: 'x' is not a number" -- python3 bench/ideal_mse.py "$DIR/ideal_ref.pfm" x
+printf 'PF\n2 one\n-1\n' > "$DIR/ideal_bad.pfm"
+check ideal_mse_bad_header 1 "ideal_bad.pfm: the PFM's size or scale line is not numbers" -- python3 bench/ideal_mse.py "$DIR/ideal_bad.pfm" 1
 
 QUICK=1 RESULTS="$DIR/results" CACHE="$DIR/cache" sh bench/all.sh "$BIN" > "$DIR/all.log" 2>&1
 rc=$?
