@@ -79,8 +79,9 @@ def main(argv):
         if (mw, mh) != (w, h):
             sys.exit(f"{mask_path}: {mw}x{mh}, the reference is {w}x{h}")
         kept = [j for j in kept if luminance(mask, 3 * j) == 0.0]
-        if not kept:
-            sys.exit(f"{mask_path}: every pixel is lit")
+    if not any(luminance(ref, 3 * j) > 0.0 for j in kept):
+        where = f" outside the lit pixels of {mask_path}" if mask_path else ""
+        sys.exit(f"{argv[1]}: no pixel{where} has a positive luminance")
     try:
         mutations = float(argv[2])
     except ValueError:
