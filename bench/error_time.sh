@@ -14,7 +14,7 @@
 # Writes bench/results/error_time/. Usage: bench/error_time.sh [BIN]
 # Settings (environment): SCENES, SIZES, SECONDS, SEEDS, LOG_EVERY, THREADS,
 # METHODS (those of flags() below: -eF is --omc-effort F, -pP --large-step P,
-# mlt-strataN --strata N, mlt-fsN --film-step N, mlt-rN --restart N), REF_SECONDS and REF_SECONDS_FILM (the references'
+# mlt-strataN --strata N, mlt-fsN --film-step N (mlt-fsfilm: film), mlt-rN --restart N), REF_SECONDS and REF_SECONDS_FILM (the references'
 # time at N x N and at the scene's film; bench/reference.sh);
 # PLOT_ONLY=1 redraws the charts and the table from the last run's CSVs.
 set -eu
@@ -94,7 +94,7 @@ for size in $SIZES; do
         "mlt-k2=split-transition K = 2" "mlt-k4=split-transition K = 4" \
         "mlt-strata=MLT, split auto, strata auto" "mlt-strata8=MLT, split auto, strata of 8" \
         "mlt-strata32=MLT, split auto, strata of 32" \
-        "mlt-fs4=MLT, film steps of 4 pixels" "mlt-fs8=MLT, film steps of 8 pixels" \
+        "mlt-fsfilm=MLT, film steps of a 64th of the film" "mlt-fs4=MLT, film steps of 4 pixels" "mlt-fs8=MLT, film steps of 8 pixels" \
         "mlt-fs16=MLT, film steps of 16 pixels" "mlt-r8=MLT, restarts every 8 steps" \
         "mlt-r16=MLT, restarts every 16 steps" \
         "mlt-r32=MLT, restarts every 32 steps"

@@ -279,15 +279,20 @@ std::vector<cl_uint> film_stretch(std::uint32_t film_step, const std::vector<Str
 } // namespace
 
 // A film number's largest small step is 2^-6 of its unit square times the
-// stretch, so stretch * n / 64 pixels in a tile of n pixels. Without
-// --film-step it is a 64th of the film, in a tile as on the whole film; with
-// it, the step asked for in pixels, rounded to a multiple of n / 64 (at
-// least one). Grids: whole films of 128x128, 512x512 and 160x90, and the
-// first tile of 16 pixels of a 128x128 film.
+// stretch, so stretch * n / 64 pixels in a tile of n pixels. With --film-step
+// film it is a 64th of the film, in a tile as on the whole film; with
+// PIXELS, the step asked for, rounded to a multiple of n / 64 (at least
+// one); with auto (the default), the larger of the two for 4 pixels. Grids:
+// whole films of 128x128, 512x512 and 160x90, and the first tile of 16
+// pixels of a 128x128 film.
 TEST(SmallStep, FilmStepIsAFilmsSixtyFourthOrTheAskedPixels) {
     const std::vector<StrataGrid> grids = {strata_grid(128, 128, 0), strata_grid(512, 512, 0),
                                            strata_grid(160, 90, 0), strata_grid(128, 128, 16)};
     EXPECT_EQ(film_stretch(0, grids), (std::vector<cl_uint>{1, 1, 1, 1, 1, 1, 8, 8}));
+    // auto: 4 pixels is 4 * 64 / n rounded, 2 on 128 and 2.1 and 3.3 on
+    // 160x90; on 512 less than a 64th of the film, which stays; in a tile of
+    // 16 of a 128 film, 16 against the film's 8.
+    EXPECT_EQ(film_stretch(kFilmStepAuto, grids), (std::vector<cl_uint>{2, 2, 1, 1, 2, 3, 16, 16}));
     // 8 pixels: 8 * 64 / n, rounded: 4 on 128, 1 on 512, 3.2 and 5.7 on
     // 160x90, 32 in a tile of 16.
     EXPECT_EQ(film_stretch(8, grids), (std::vector<cl_uint>{4, 4, 1, 1, 3, 6, 32, 32}));

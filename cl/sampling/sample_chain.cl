@@ -88,16 +88,22 @@ inline uint smp_small_delta(uint r, uint bits) {
 
 /* How many times longer a film number's small step is than another
  * number's, whose largest is 2^-6 of its unit square (the tile's n pixels
- * along the axis). Without MLT_FILM_STEP: the film over the tile, rounded
- * (1 on the whole film), so that a step moves as many pixels in a tile as
- * on the film, at most a 64th of the film. With it: at most MLT_FILM_STEP
- * pixels, rounded to a multiple of n / 64 pixels (at least one). */
+ * along the axis). With MLT_FILM_STEP: at most MLT_FILM_STEP pixels, rounded
+ * to a multiple of n / 64 pixels (at least one). Otherwise the film over the
+ * tile, rounded (1 on the whole film), so that a step moves as many pixels in
+ * a tile as on the film, at most a 64th of the film; with
+ * MLT_FILM_STEP_FLOOR, at least that many pixels, rounded as above. */
 inline uint smp_film_stretch(const SampleSource* s, uint dim) {
-#ifdef MLT_FILM_STEP
     uint n = dim ? s->tile.h : s->tile.w;
+#ifdef MLT_FILM_STEP
     return max((MLT_FILM_STEP * 64u + n / 2u) / n, 1u);
 #else
-    return (uint)(1.0f / (dim ? s->tile.sy : s->tile.sx) + 0.5f);
+    uint film = (uint)(1.0f / (dim ? s->tile.sy : s->tile.sx) + 0.5f);
+#ifdef MLT_FILM_STEP_FLOOR
+    return max(film, (MLT_FILM_STEP_FLOOR * 64u + n / 2u) / n);
+#else
+    return film;
+#endif
 #endif
 }
 

@@ -224,18 +224,20 @@ const std::vector<Flag> kMltFlags = {
          std::uint32_t s = MltOptions().strata;
          return s == 0 ? std::string("none") : s == kStrataAuto ? "auto" : std::to_string(s);
      }},
-    {"--film-step", "film|PIXELS", Section::Mlt,
+    {"--film-step", "auto|film|PIXELS", Section::Mlt,
      [](JobOptions& o, const FlagValue& v) {
-         o.mlt.film_step = v.text == "film" ? 0 : std::uint32_t(v.integer());
+         o.mlt.film_step = v.text == "film"   ? 0
+                           : v.text == "auto" ? kFilmStepAuto
+                                              : std::uint32_t(v.integer());
      },
      "the largest small step of a chain's film position: PIXELS ({range}; at least a 64th "
-     "of its tile), or film: a 64th of the film's width and height, Kelemen's step, in a "
-     "tile of --strata as on the film (default {default}; doc/design.md, \"Small steps on "
-     "the film\")",
+     "of its tile); film: a 64th of the film's width and height, Kelemen's step, in a tile "
+     "of --strata as on the film; auto: the larger of film and 4 pixels (default {default}; "
+     "doc/design.md, \"Small steps on the film\")",
      1, 16384, nullptr,
      [] {
          std::uint32_t s = MltOptions().film_step;
-         return s == 0 ? std::string("film") : std::to_string(s);
+         return s == 0 ? std::string("film") : s == kFilmStepAuto ? "auto" : std::to_string(s);
      }},
     {"--restart", "STEPS", Section::Mlt,
      [](RenderOptions& o, const FlagValue& v) { o.mlt.restart = std::uint32_t(v.integer()); },

@@ -20,7 +20,11 @@ constexpr bool kDefaultKelemen = true;
 constexpr float kDefaultLargeStepKelemen = 0.3f;  // with burn-in and Kelemen's weights
 constexpr float kDefaultLargeStepBurnIn = 0.1f;   // with burn-in and expected values
 constexpr float kDefaultLargeStepNoBurnIn = 0.5f; // the paper's baseline without
-constexpr std::uint32_t kDefaultFilmStep = 0;     // a 64th of the film
+// --film-step: 0 is Kelemen's step, a 64th of the film; auto is the larger of
+// that and kFilmStepFloorPixels (doc/design.md, "Small steps on the film").
+constexpr std::uint32_t kFilmStepAuto = 0xFFFFFFFFu;
+constexpr std::uint32_t kFilmStepFloorPixels = 4;
+constexpr std::uint32_t kDefaultFilmStep = kFilmStepAuto;
 
 // What tests change in an MLT render besides its options, passed to the
 // renderer apart from them (the command line never sets these): reference
