@@ -86,24 +86,29 @@ inline uint smp_small_delta(uint r, uint bits) {
     return max((uint)((p + (1ul << (shift - 1u))) >> shift), 1u);
 }
 
+/* The stretch that makes the largest small step of a number on an axis of n
+ * pixels about `pixels` pixels: pixels x 64 / n, rounded. */
+inline uint smp_pixels_stretch(uint pixels, uint n) {
+    return (pixels * 64u + n / 2u) / n;
+}
+
 /* How many times longer a film number's small step is than another
  * number's, whose largest is 2^-6 of its unit square (the tile's n pixels
- * along the axis). With MLT_FILM_STEP: at most MLT_FILM_STEP pixels, rounded
- * to a multiple of n / 64 pixels (at least one). Otherwise the film over the
- * tile, rounded (1 on the whole film), so that a step moves as many pixels in
- * a tile as on the film, at most a 64th of the film; with
- * MLT_FILM_STEP_FLOOR, at least that many pixels, rounded as above. */
+ * along the axis). With MLT_FILM_STEP: about MLT_FILM_STEP pixels (at least
+ * a stretch of one). Otherwise the film over the tile, rounded (1 on the
+ * whole film), so that a step moves as many pixels in a tile as on the film,
+ * at most a 64th of the film; with MLT_FILM_STEP_FLOOR, at least about that
+ * many pixels. */
 inline uint smp_film_stretch(const SampleSource* s, uint dim) {
     uint n = dim ? s->tile.h : s->tile.w;
 #ifdef MLT_FILM_STEP
-    return max((MLT_FILM_STEP * 64u + n / 2u) / n, 1u);
+    return max(smp_pixels_stretch(MLT_FILM_STEP, n), 1u);
 #else
-    uint film = (uint)(1.0f / (dim ? s->tile.sy : s->tile.sx) + 0.5f);
+    uint stretch = (uint)(1.0f / (dim ? s->tile.sy : s->tile.sx) + 0.5f);
 #ifdef MLT_FILM_STEP_FLOOR
-    return max(film, (MLT_FILM_STEP_FLOOR * 64u + n / 2u) / n);
-#else
-    return film;
+    stretch = max(stretch, smp_pixels_stretch(MLT_FILM_STEP_FLOOR, n));
 #endif
+    return stretch;
 #endif
 }
 
