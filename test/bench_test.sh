@@ -54,6 +54,15 @@ check ideal_mse_bad_count 1 "MUTATIONS_PER_PIXEL: 'x' is not a number" -- python
 printf 'PF\n2 one\n-1\n' > "$DIR/ideal_bad.pfm"
 check ideal_mse_bad_header 1 "ideal_bad.pfm: the PFM's size or scale line is not numbers" -- python3 bench/ideal_mse.py "$DIR/ideal_bad.pfm" 1
 
+# bench/error_by_luminance.py on the same kind of PFMs: the reference's
+# pixels are 3 and 1, the image's 3.5 and 1. In two bins by luminance, the
+# bright pixel is bin 1 with 3 / 4 of the light and all of the error: an MSE
+# of 0.5^2 = 0.25.
+pfm "$f3" "$f1" > "$DIR/lum_ref.pfm"
+pfm "$f35" "$f1" > "$DIR/lum_img.pfm"
+truth error_by_luminance_by_hand sh -c "python3 bench/error_by_luminance.py --bins 2 '$DIR/lum_ref.pfm' '$DIR/lum_img.pfm' | grep -q '^  1 3.0000-3.0000  75.0%  *2.500e-01 (100.0%)\$'"
+check error_by_luminance_bad_bins 1 "--bins: expected a whole number" -- python3 bench/error_by_luminance.py --bins x "$DIR/lum_ref.pfm" "$DIR/lum_img.pfm"
+
 QUICK=1 RESULTS="$DIR/results" CACHE="$DIR/cache" sh bench/all.sh "$BIN" > "$DIR/all.log" 2>&1
 rc=$?
 truth bench_quick_exit_0 [ "$rc" -eq 0 ]
