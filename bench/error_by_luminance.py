@@ -7,18 +7,14 @@ pixel count (default 10). For each bin: its luminance range, its share of the
 reference's luminance (the share of an MLT render's mutations that land
 there, its chains' target being luminance), and for each IMAGE the MSE over
 the bin's pixels (linear RGB, as `smallmlt compare`) with the bin's share of
-the image's summed squared error. Pure Python, using bench/ideal_mse.py's
-PFM reader.
+the image's summed squared error. Pure Python, on bench/ideal_mse.py's PFM
+reader and MSE.
 """
 import os
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from ideal_mse import luminance, read_pfm  # noqa: E402
-
-
-def squared_error(image, ref, j):
-    return sum((image[3 * j + c] - ref[3 * j + c]) ** 2 for c in range(3))
+from ideal_mse import luminance, mse, read_pfm  # noqa: E402
 
 
 def main(argv):
@@ -46,18 +42,19 @@ def main(argv):
     if not total_lum > 0.0:
         sys.exit(f"{argv[0]}: a black reference")
     order = sorted(range(pixels), key=lambda j: lum[j])
-    totals = [sum(squared_error(im, ref, j) for j in range(pixels)) for _, im in images]
+    films = [mse(im, ref, range(pixels)) for _, im in images]
     print("bin luminance        light  " + "  ".join(f"{os.path.basename(p):>24}" for p, _ in images))
     for b in range(bins):
         js = order[b * pixels // bins:(b + 1) * pixels // bins]
         share = sum(lum[j] for j in js) / total_lum
         cells = []
-        for (_, im), total in zip(images, totals):
-            se = sum(squared_error(im, ref, j) for j in js)
-            cells.append(f"{se / (3 * len(js)):.3e} ({100 * se / total if total else 0:5.1f}%)")
+        for (_, im), film in zip(images, films):
+            err = mse(im, ref, js)
+            part = 100 * err * len(js) / (film * pixels) if film else 0
+            cells.append(f"{err:.3e} ({part:5.1f}%)")
         print(f"{b:3d} {lum[js[0]]:.4f}-{lum[js[-1]]:.4f} {100 * share:5.1f}%  " +
               "  ".join(f"{c:>24}" for c in cells))
-    print("all" + " " * 22 + "  ".join(f"{t / (3 * pixels):>24.3e}" for t in totals))
+    print("all" + " " * 22 + "  ".join(f"{f:>24.3e}" for f in films))
 
 
 if __name__ == "__main__":
