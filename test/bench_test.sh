@@ -63,6 +63,18 @@ pfm "$f35" "$f1" > "$DIR/lum_img.pfm"
 truth error_by_luminance_by_hand sh -c "python3 bench/error_by_luminance.py --bins 2 '$DIR/lum_ref.pfm' '$DIR/lum_img.pfm' | grep -q '^  1 3.0000-3.0000  75.0%  *2.500e-01 (100.0%)\$'"
 check error_by_luminance_bad_bins 1 "--bins: expected a whole number" -- python3 bench/error_by_luminance.py --bins x "$DIR/lum_ref.pfm" "$DIR/lum_img.pfm"
 
+# bench/seed_mse.py on 2x1 PFMs: method a renders (1, 3) and (3, 1), a
+# sample variance of 2 in each pixel; method b (1.5, 2.5) and (2.5, 1.5),
+# 0.5, a quarter of a's. The film is smaller than a block.
+f25='\000\000\040\100'
+mkdir -p "$DIR/seeds"
+pfm "$f1" "$f3" > "$DIR/seeds/h-a-1.pfm"
+pfm "$f3" "$f1" > "$DIR/seeds/h-a-2.pfm"
+pfm "$f15" "$f25" > "$DIR/seeds/h-b-1.pfm"
+pfm "$f25" "$f15" > "$DIR/seeds/h-b-2.pfm"
+truth seed_mse_by_hand [ "$(python3 bench/seed_mse.py "$DIR/seeds" h a b | tail -n 1)" = "h b: 2 seeds, mse 0.5 (0.250), block8 -, block32 -" ]
+check seed_mse_one_render 1 "h-c-*.pfm: 0 render(s), need 2 or more" -- python3 bench/seed_mse.py "$DIR/seeds" h a c
+
 QUICK=1 RESULTS="$DIR/results" CACHE="$DIR/cache" sh bench/all.sh "$BIN" > "$DIR/all.log" 2>&1
 rc=$?
 truth bench_quick_exit_0 [ "$rc" -eq 0 ]

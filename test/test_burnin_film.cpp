@@ -37,6 +37,7 @@ MltOptions three_rounds(std::uint32_t threads, Split split) {
     opt.threads = threads;
     opt.burn_in_iters = 3;
     opt.split = split;
+    opt.omc_cells = false; // every round's paths stay in the parts
     return opt;
 }
 

@@ -22,18 +22,22 @@ struct Case {
     Split split = Split::None;
 };
 
+// The MLT render of `c`: 2 rounds of burn-in.
+MltOptions case_options(const Case& c) {
+    MltOptions opt = test::plain_mlt();
+    opt.threads = c.threads;
+    opt.proposals = c.proposals;
+    opt.burn_in_iters = 2;
+    opt.split = c.split;
+    return opt;
+}
+
 // Device bytes a full MLT render (burn-in, steps, image) allocates at its peak.
-std::uint64_t mlt_peak(const DeviceScene& ds, std::uint32_t threads, std::uint32_t proposals = 1,
-                       Split split = Split::None) {
+std::uint64_t mlt_peak(const DeviceScene& ds, const MltOptions& opt) {
     const ClContext& cl = test::cl();
     std::uint64_t before = cl.live_bytes();
     cl.reset_peak();
     {
-        MltOptions opt = test::plain_mlt();
-        opt.threads = threads;
-        opt.proposals = proposals;
-        opt.burn_in_iters = 2;
-        opt.split = split;
         MltRenderer mlt(cl, ds, opt);
         mlt.prepare();
         mlt.step(1);
@@ -55,11 +59,11 @@ TEST(MemoryPlan, PredictsWhatMltRendersAllocate) {
           Case{"cornell-glass", 512, 8, 16}, Case{"cornell-water", 1024, 1, 24, Split::Direct},
           Case{"cornell", 4096, 4, 8, Split::Visible}}) {
         DeviceScene ds = prepare_scene(test::scene(c.scene, 24, 16, c.depth));
-        MemoryPlan plan =
-            plan_mlt(ds, ChainShape{c.threads, c.proposals, false, false, c.split != Split::None});
+        const MltOptions opt = case_options(c);
+        MemoryPlan plan = plan_mlt(ds, mlt_chain_shape(opt));
         EXPECT_EQ(plan.bytes(Buffer::Values),
                   std::uint64_t(c.threads / c.proposals) * sizeof(ChainValue));
-        EXPECT_EQ(mlt_peak(ds, c.threads, c.proposals, c.split), plan.total())
+        EXPECT_EQ(mlt_peak(ds, opt), plan.total())
             << c.scene << " N " << c.threads << " K " << c.proposals << " split "
             << split_name(c.split);
     }
@@ -105,7 +109,7 @@ TEST(ThreadCount, FollowsTheDeviceMemory) {
         ThreadChoice c = choose_threads(ds, ChainShape{}, dev, budget);
         EXPECT_LE(c.threads, previous) << mib << " MiB";
         previous = c.threads;
-        std::uint64_t peak = mlt_peak(ds, c.threads);
+        std::uint64_t peak = mlt_peak(ds, case_options(Case{"cornell-water", c.threads, 1, 0}));
         EXPECT_EQ(peak, c.plan.total());
         EXPECT_LE(double(peak), kMemoryFraction * double(budget.global_bytes)) << mib << " MiB";
         EXPECT_LE(c.plan.largest(), budget.max_alloc_bytes) << mib << " MiB";

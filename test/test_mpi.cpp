@@ -259,6 +259,7 @@ TEST(MpiRender, TwoStageRanksFixOneTargetFromAllTheirSamples) {
     opt.threads = 256;
     opt.burn_in_iters = 16;
     opt.target = Target::TwoStage;
+    opt.omc_cells = false; // the two-stage weights alone
     Exchange ex(2);
     std::vector<std::vector<float>> weights;
     for (int pass = 0; pass < 2; ++pass) { // the second has every rank's sums
@@ -274,13 +275,20 @@ TEST(MpiRender, TwoStageRanksFixOneTargetFromAllTheirSamples) {
     }
     ASSERT_TRUE(ex.complete);
     ASSERT_EQ(ex.inputs.size(), 1u) << "one sum over ranks fixes the target";
+    // The parts summed (TargetBuffer::fix): per pixel and channel the MLT
+    // part's sums, then per pixel its squares, its light behind glass and
+    // its samples.
     std::vector<double> sums = ex.inputs[0][0];
     for (std::size_t k = 0; k < sums.size(); ++k)
         sums[k] += ex.inputs[0][1][k];
-    ASSERT_EQ(sums.back(), 2.0 * opt.threads * opt.burn_in_iters / 2) << "samples that fix it";
-    TargetCells cells = target_cells(w, h, std::uint64_t(sums.back()));
+    ASSERT_EQ(sums.size(), 6u * w * h);
+    double samples = 0;
+    for (std::size_t p = 0; p < w * h; ++p)
+        samples += sums[5 * w * h + p];
+    ASSERT_EQ(samples, 2.0 * opt.threads * opt.burn_in_iters / 2) << "samples that fix it";
+    TargetCells cells = target_cells(w, h, std::uint64_t(samples));
     ASSERT_EQ(target_cell_count(cells, h), 4u);
-    sums.pop_back();
+    sums.resize(3 * w * h);
     std::vector<float> expected = target_weights(cells, w, h, sums);
     expected.resize(weights[0].size(), 1.0f);
     std::printf("weights of the 4 cells: %.3f %.3f %.3f %.3f\n", expected[0], expected[1],
@@ -297,6 +305,7 @@ TEST(MpiRender, KelemenRanksWeighWithOneB0) {
     MltOptions opt;
     opt.threads = 256;
     opt.burn_in_iters = 2; // few samples: the ranks' own b differ
+    opt.omc_cells = false; // cornell's one cell would go to the OMC part whole: no b0
     Exchange ex(2);
     std::vector<float> pb;
     std::uint64_t lum = 0, samples = 0;
@@ -319,6 +328,7 @@ TEST(MpiRender, KelemenRanksWeighWithOneB0) {
     ASSERT_TRUE(ex.complete);
     const float want = float(double(large_step_of(opt)) * mlt_b(lum, samples));
     std::printf("p b0: rank 0 %.6g, rank 1 %.6g, of the union %.6g\n", pb[0], pb[1], want);
+    EXPECT_GT(want, 0.0f);
     EXPECT_EQ(pb[0], want);
     EXPECT_EQ(pb[1], want);
 }

@@ -72,6 +72,7 @@ TEST(Options, EmptyCommandLineGivesTheLibraryDefaults) {
     EXPECT_EQ(m.stuck_run, lib.stuck_run);
     EXPECT_EQ(m.split, lib.split);
     EXPECT_EQ(m.omc_effort, lib.omc_effort);
+    EXPECT_EQ(m.omc_cells, lib.omc_cells);
     EXPECT_EQ(m.target, lib.target);
     EXPECT_EQ(m.kelemen, lib.kelemen);
     EXPECT_EQ(m.strata, lib.strata);
@@ -90,6 +91,7 @@ TEST(Options, EmptyCommandLineGivesTheLibraryDefaults) {
     const MltOptions& b = parse("budget s.scene").budget.mlt;
     EXPECT_EQ(b.proposals, lib.proposals);
     EXPECT_EQ(b.split, lib.split);
+    EXPECT_EQ(b.omc_cells, lib.omc_cells);
     EXPECT_EQ(b.target, lib.target);
 }
 
@@ -120,7 +122,8 @@ TEST(Options, LargeStepDefaultDependsOnBurnInAndWeightsAlike) {
 
 // A flag render and budget share is one entry and sets the same fields.
 TEST(Options, BudgetReadsTheSharedFlagsAsRenderDoes) {
-    const std::string flags = " --threads 512 --proposals 4 --split direct --target two-stage "
+    const std::string flags = " --threads 512 --proposals 4 --split direct --omc-cells off "
+                              "--target two-stage "
                               "--depth 0 --width 8 --height 9 --device-mem 64M "
                               "--profile adreno-650 --device 1";
     const RenderOptions r = parse("render s.scene" + flags).render;
@@ -130,6 +133,8 @@ TEST(Options, BudgetReadsTheSharedFlagsAsRenderDoes) {
         EXPECT_EQ(o->threads, 512u);
         EXPECT_EQ(o->mlt.proposals, 4u);
         EXPECT_EQ(o->mlt.split, Split::Direct);
+        EXPECT_FALSE(o->mlt.omc_cells);
+        EXPECT_TRUE(MltOptions().omc_cells) << "the flag must change the default";
         EXPECT_EQ(o->mlt.target, Target::TwoStage);
         EXPECT_EQ(o->depth, 0);
         EXPECT_EQ(o->width, 8);

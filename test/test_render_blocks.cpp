@@ -156,6 +156,9 @@ TEST_P(RenderBlocks, MltMatchesPathTracingPerBlock) {
             errors[k] += image_mse_excluding(m.image(), pt.image, pt.lights);
         }
         Image img = m.image();
+        if (r == 0 && c.split != Split::None)
+            std::printf("%s: %u of %u cells to the OMC part whole\n", c.scene, m.report().omc_cells,
+                        m.report().target_cells);
         double chains = m.part_image(MltRenderer::Part::Mlt).mean_luminance();
         scale_error =
             std::max(scale_error, std::abs(chains / m.b() - 1) / test::film_mean_tolerance(m));

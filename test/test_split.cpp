@@ -80,20 +80,8 @@ TEST(Split, PartsAddUpToThePathTracerPathByPath) {
     }
 }
 
-namespace {
-
-// The furnace: Kd 0.5 and Ke 1 on every face of a closed box, so light
-// reaching the camera after L vertices is 0.5^L; the OMC part of a split of
-// L vertices is sum_{i<L} 0.5^i and the chains' b the rest up to the depth.
-double furnace_sum(int from, int to) {
-    double s = 0;
-    for (int i = from; i <= to; ++i)
-        s += std::pow(0.5, i);
-    return s;
-}
-
-} // namespace
-
+// The furnace (test::furnace_sum): the OMC part of a split of L vertices is
+// sum_{i<L} 0.5^i and the chains' b the rest up to the depth.
 // Each part of the furnace at depth 4 against its closed form: b (the MLT
 // part's mean) within 4 standard errors plus 0.2%, the OMC part's image
 // mean (per-pixel samples and the burn-in's) within 0.3%, the chains'
@@ -108,11 +96,12 @@ TEST(Split, FurnacePartsAreTheClosedForm) {
         opt.seed = 9;
         opt.split = s;
         opt.omc_effort = 0.1;
+        opt.omc_cells = false; // the furnace's every cell would go to the OMC part whole
         MltRenderer mlt(test::cl(), ds, opt);
         mlt.prepare();
         mlt.step(8);
         int l = int(split_vertices(s));
-        double want_b = furnace_sum(l, depth), want_omc = furnace_sum(0, l - 1);
+        double want_b = test::furnace_sum(l, depth), want_omc = test::furnace_sum(0, l - 1);
         double b = mlt.b(), omc = mlt.part_image(MltRenderer::Part::Omc).mean_luminance();
         double chains = mlt.part_image(MltRenderer::Part::Mlt).mean_luminance();
         std::printf("furnace depth %d, split %s: b %.5f (+-%.3f%%) vs %.5f; OMC part %.5f vs "
@@ -166,7 +155,8 @@ TEST(Split, AutoRunsChainsOnlyWhereTheyPay) {
                 split_name(f.split()));
     EXPECT_EQ(f.split(), Split::All);
     EXPECT_EQ(f.stats().mutations, 0u);
-    EXPECT_NEAR(f.image().mean_luminance(), furnace_sum(0, 4), 0.003 * furnace_sum(0, 4));
+    EXPECT_NEAR(f.image().mean_luminance(), test::furnace_sum(0, 4),
+                0.003 * test::furnace_sum(0, 4));
 
     DeviceScene water = prepare_scene(test::scene("cornell-water", 32, 32));
     MltRenderer w(test::cl(), water, opt);
@@ -207,7 +197,8 @@ namespace {
 
 // t_o / t_m of the rule's n_o: the OMC part's rays per step over the chains'.
 double omc_time_ratio(const SplitCosts& c, double effort) {
-    return omc_samples_per_step(c, effort) * c.pixels * c.omc_rays / (c.threads * c.mutation_rays);
+    return omc_samples_per_step(c, effort).film * c.pixels * c.omc_rays /
+           (c.threads * c.mutation_rays);
 }
 
 } // namespace
@@ -250,6 +241,50 @@ TEST(Split, RuleGivesTheOmcPartAtMostTheChainsTime) {
     missed.omc_variance = 0;
     EXPECT_DOUBLE_EQ(omc_time_ratio(missed, 1), kOmcMinTimeRatio);
     EXPECT_DOUBLE_EQ(omc_time_ratio(missed, 0), 0.0) << "--omc-effort 0";
+}
+
+// With cells the OMC part renders whole, the times of its two parts are in
+// proportion to sqrt(A) and sqrt(A_c) (split.hpp), their sum capped at
+// kOmcMaxTimeRatio. Costs of ajar at 128x128: no light seen directly (V_o
+// = 0: the film's floor), 13 cells of whole paths.
+TEST(Split, RuleGivesTheCellsTheirOwnShare) {
+    SplitCosts c;
+    c.b = 0.067;
+    c.pixels = 128 * 128;
+    c.omc_rays = 1;
+    c.mutation_rays = 9;
+    c.threads = 16384;
+    c.cell_pixels = 13 * 64;
+    c.cell_rays = 6;
+    c.cell_variance = 0.05 * c.cell_pixels;
+    const double cm = kChainCorrelation * c.b * c.b * c.pixels * c.pixels * c.mutation_rays;
+    const double want_c =
+        std::sqrt(kPixelStratification * c.cell_variance * c.cell_pixels * c.cell_rays / cm);
+    const OmcRates r = omc_samples_per_step(c, 1);
+    const double per_time = c.threads * c.mutation_rays;
+    const double film_pixels = c.pixels - c.cell_pixels;
+    EXPECT_NEAR(r.film * film_pixels * c.omc_rays / per_time, kOmcMinTimeRatio, 1e-12);
+    EXPECT_NEAR(r.cells * c.cell_pixels * c.cell_rays / per_time, want_c, 1e-12);
+    std::printf("ajar-like cells: t_c / t_m %.3f, %.3g + %.3g spp per step\n", want_c, r.film,
+                r.cells);
+
+    // Far above the cap: both parts scaled down to it together, in the
+    // proportion sqrt(A) : sqrt(A_c) = 1 : 2.
+    c.omc_variance = 1e6;
+    c.cell_variance = 4 * c.omc_variance * film_pixels / c.cell_pixels * c.omc_rays / c.cell_rays /
+                      kPixelStratification;
+    const OmcRates capped = omc_samples_per_step(c, 1);
+    const double t_o = capped.film * film_pixels * c.omc_rays / per_time;
+    const double t_c = capped.cells * c.cell_pixels * c.cell_rays / per_time;
+    EXPECT_NEAR(t_o, kOmcMaxTimeRatio / 3, 1e-12);
+    EXPECT_NEAR(t_c, 2 * kOmcMaxTimeRatio / 3, 1e-12);
+
+    // No cells: the rule of one OMC part, every pixel alike.
+    SplitCosts none = c;
+    none.cell_pixels = 0;
+    none.cell_variance = 0;
+    EXPECT_EQ(omc_samples_per_step(none, 1).cells, 0.0);
+    EXPECT_NEAR(omc_time_ratio(none, 1), kOmcMaxTimeRatio, 1e-12);
 }
 
 // The share of the MLT part's light that lay behind smooth transmitters
@@ -329,6 +364,7 @@ TEST(Split, ChainsRunBesideABrightLightSeenDirectly) {
                 split_name(mlt.split()), static_cast<unsigned long long>(s.mutations),
                 mlt.omc_rate(), omc_rays_per_step, chain_rays_per_step);
     EXPECT_EQ(mlt.split(), kChainsSplit);
+    EXPECT_EQ(mlt.report().omc_cells, 0u) << "light behind glass is the chains'";
     EXPECT_EQ(s.mutations, 4u * opt.threads);
     EXPECT_GT(mlt.part_image(MltRenderer::Part::Mlt).mean_luminance(), 0.0);
     EXPECT_LE(omc_rays_per_step, 1.05 * chain_rays_per_step);

@@ -107,6 +107,16 @@ inline DeviceScene layout_only_scene(const SceneFeatures& f, int width = 4, int 
 // expected values (no Kelemen weights) and take large steps at 0.5. The
 // tests of the chains and of their image are written against it; the
 // library's defaults (MltOptions{}) are the command line's.
+// The furnace: Kd 0.5 and Ke 1 on every face of a closed box, so light
+// reaching the camera after L vertices is 0.5^L; this sums it over L = lo
+// .. hi.
+inline double furnace_sum(int lo, int hi) {
+    double s = 0;
+    for (int l = lo; l <= hi; ++l)
+        s += std::pow(0.5, l);
+    return s;
+}
+
 inline MltOptions plain_mlt() {
     MltOptions opt;
     opt.split = Split::None;

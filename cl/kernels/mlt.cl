@@ -27,7 +27,8 @@ __kernel void mlt_luminance(SCENE_ARGS, __global const float* weight, const Targ
         MltTarget target = mlt_target(weight, cells, &frame, 0.0f);
         BurnInSample b = burnin_sample(&film, &frame, (ulong)round * film.per_round + i);
         SampleSource src = smp_chain_start(state, 0u, 1u, b, b.film, strata_whole(&frame));
-        EvalResult s = mlt_checked(eval_state(&sc, &frame, &src), &nonfinite);
+        EvalResult s =
+            mlt_cell_parts(&target, mlt_checked(eval_state(&sc, &frame, &src), &nonfinite));
         lum[i] = path_luminance(s.f) * mlt_weight(&target, s.pixel);
 #ifdef MLT_BURN_IN_SAMPLES
         omc[2u * i] = (float4)(s.omc, as_float(s.pixel));

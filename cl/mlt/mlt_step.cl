@@ -2,7 +2,8 @@
  * al. 2002) in the split-transition form of Frolov and Galaktionov (section
  * 3.3, Algorithm 1); cl/kernels/mlt.cl composes them. The target is
  * I(x) = lum(F(x)) w(x), w the weight of x's pixel's cell (MltTarget; 1
- * everywhere but for the two-stage target, src/render/target.hpp). A chain
+ * everywhere but for the two-stage target, src/render/target.hpp, and 0 in
+ * the cells the OMC part renders whole, src/render/omc_cells.hpp). A chain
  * keeps G(x) = F(x) w(x), so that I(x) = lum(G(x)). Splats use expected
  * values: a proposal y adds a * F(y)/I(y) at its pixel and the chain's state
  * x adds its stay weight * F(x)/I(x) at x's, with a = min(1, I(y)/I(x)), so
@@ -22,8 +23,8 @@
  * to the group's own row of stats, so the only global atomics are the
  * film's. */
 
-/* The target's weights, w >= 1 per cell of TargetCells, and what a splat
- * weighs. */
+/* The target's weights, w >= 1 per cell of TargetCells (0 in the cells
+ * the OMC part renders whole), and what a splat weighs. */
 typedef struct {
     __global const float* weight;
     TargetCells cells;
@@ -68,8 +69,24 @@ inline float mlt_kelemen(const MltTarget* t, float i) {
 
 /* w at a pixel. */
 inline float mlt_weight(const MltTarget* t, uint pixel) {
-    uint x = pixel % t->width, y = pixel / t->width;
-    return t->weight[(y >> t->cells.shift) * t->cells.columns + (x >> t->cells.shift)];
+    return target_weight(t->weight, &t->cells, t->width, pixel);
+}
+
+/* What a splat of G at target value i in a cell of weight w weighs per unit
+ * of its expected-value weight: Kelemen's share over w; 0 where w = 0 (a
+ * cell the OMC part renders whole, where G = 0). */
+inline float mlt_splat_scale(const MltTarget* t, float i, float w) {
+    return w > 0.0f ? mlt_kelemen(t, i) / w : 0.0f;
+}
+
+/* A path in a cell the OMC part renders whole (w = 0): its MLT part joins
+ * its OMC part (cl/core/target_cells.h), for the burn-in's parts. */
+inline EvalResult mlt_cell_parts(const MltTarget* t, EvalResult s) {
+    if (mlt_weight(t, s.pixel) > 0.0f) return s;
+    s.omc += s.f;
+    s.f = (float3)(0.0f);
+    s.behind_specular = 0.0f;
+    return s;
 }
 
 /* Numbers of a step's stream reserved for the step itself: the large-step
@@ -163,7 +180,7 @@ inline float mlt_try_proposal(const SceneView* sc, const Frame* frame, SampleSou
     *y = mlt_evaluate(sc, frame, src, target, nonfinite, &wy);
     float iy = path_luminance(y->f);
     float a = ix > 0.0f ? fmin(1.0f, iy / ix) : 1.0f;
-    float w = mlt_kelemen(target, iy) / wy;
+    float w = mlt_splat_scale(target, iy, wy);
     *atomics +=
         film_splat(film, y->pixel, FILM_LAYER_CHAINS, y->f, a * w, key, MLT_DIM_ROUND_Y, false);
     if (large && target->kelemen_pb > 0.0f)
@@ -197,7 +214,7 @@ inline uint mlt_splat_state(const Frame* frame, const MltTarget* target, const F
                             float w, const Film* film, ulong key, uint dim, bool undo) {
     uint pixel = mlt_state_pixel(frame, tile, state, chain, chains);
     float3 g = chain_g(x);
-    w *= mlt_kelemen(target, path_luminance(g)) / mlt_weight(target, pixel);
+    w *= mlt_splat_scale(target, path_luminance(g), mlt_weight(target, pixel));
     return film_splat(film, pixel, FILM_LAYER_CHAINS, g, w, key, dim, undo);
 }
 

@@ -204,6 +204,14 @@ const std::vector<Flag> kMltFlags = {
      "F times the OMC part's share of time that the split's rule gives it (default {default}; "
      "doc/design.md, \"The split\")",
      0, 0, nullptr, [] { return number(MltOptions().omc_effort); }},
+    {"--omc-cells", "on|off", Section::Mlt,
+     [](JobOptions& o, const FlagValue& v) {
+         o.mlt.omc_cells = parse_omc_cells(v.flag.name, v.text);
+     },
+     "with a split, give the OMC part whole the cells of the film where the first half of "
+     "burn-in shows that path tracing renders the chains' part well; the chains render the "
+     "rest (default {default}; doc/design.md, \"Cells for the OMC part\")",
+     0, 0, nullptr, [] { return std::string(MltOptions().omc_cells ? "on" : "off"); }},
     {"--target", "luminance|two-stage", Section::Mlt,
      [](JobOptions& o, const FlagValue& v) { o.mlt.target = parse_target(v.flag.name, v.text); },
      "the chains' target: the luminance of what they render, or that divided by a coarse "

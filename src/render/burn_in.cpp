@@ -75,41 +75,52 @@ void BurnInParts::add(const std::vector<float>& samples) {
         double yr = rgb_luminance(samples[i + 4], samples[i + 5], samples[i + 6]);
         omc_y2[pixel] += yo * yo;
         rest_y2[pixel] += yr * yr;
-        behind_specular += samples[i + 7];
+        behind[pixel] += samples[i + 7];
     }
+}
+
+double behind_share(double behind_mean, double b) {
+    return behind_mean + b > 0 ? behind_mean / (behind_mean + b) : 0;
 }
 
 double BurnInParts::behind_specular_share() const {
     const double samples = double(std::accumulate(count.begin(), count.end(), std::uint64_t(0)));
     if (!(samples > 0)) return 0;
-    const double s = behind_specular / samples, b = mean(rest);
-    return s + b > 0 ? s / (s + b) : 0;
+    return behind_share(std::accumulate(behind.begin(), behind.end(), 0.0) / samples, mean(rest));
+}
+
+double BurnInParts::luminance(const std::vector<double>& sums, std::size_t p) const {
+    return rgb_luminance(sums[3 * p], sums[3 * p + 1], sums[3 * p + 2]);
 }
 
 double BurnInParts::mean(const std::vector<double>& sums) const {
     double y = 0, samples = 0;
     for (std::size_t p = 0; p < count.size(); ++p) {
-        y += rgb_luminance(sums[3 * p], sums[3 * p + 1], sums[3 * p + 2]);
+        y += luminance(sums, p);
         samples += double(count[p]);
     }
     return samples > 0 ? y / samples : 0;
 }
 
 double BurnInParts::variance(const std::vector<double>& sums, const std::vector<double>& y2) const {
-    const std::size_t pixels = count.size();
-    double within = 0, moment = 0, samples = 0;
-    std::size_t used = 0;
-    for (std::size_t p = 0; p < pixels; ++p) {
-        const double n = double(count[p]);
-        moment += y2[p];
-        samples += n;
-        if (count[p] < 2) continue;
-        double y = rgb_luminance(sums[3 * p], sums[3 * p + 1], sums[3 * p + 2]);
-        within += std::max(0.0, (y2[p] - y * y / n) / (n - 1));
-        ++used;
-    }
-    if (used > 0) return double(pixels) * within / double(used);
-    return samples > 0 ? double(pixels) * moment / samples : 0;
+    PixelVariance v;
+    for (std::size_t p = 0; p < count.size(); ++p)
+        v.add(luminance(sums, p), y2[p], count[p]);
+    return v.value();
+}
+
+void PixelVariance::add(double y, double y2, std::uint64_t n) {
+    ++pixels_;
+    moment_ += y2;
+    samples_ += double(n);
+    if (n < 2) return;
+    within_ += std::max(0.0, (y2 - y * y / double(n)) / double(n - 1));
+    ++used_;
+}
+
+double PixelVariance::value() const {
+    if (used_ > 0) return double(pixels_) * within_ / double(used_);
+    return samples_ > 0 ? double(pixels_) * moment_ / samples_ : 0;
 }
 
 } // namespace smallmlt

@@ -49,28 +49,48 @@ struct BurnInParts {
     std::vector<double> omc, rest;       // per pixel and channel
     std::vector<double> omc_y2, rest_y2; // per pixel: sums of squared luminances
     std::vector<std::uint64_t> count;    // per pixel
-    double behind_specular = 0; // sum of the paths' light behind smooth transmitters (path.cl)
+    // Per pixel: sums of the paths' light behind smooth transmitters (path.cl).
+    std::vector<double> behind;
     explicit BurnInParts(std::uint64_t pixels = 0)
         : omc(3 * pixels, 0.0), rest(3 * pixels, 0.0), omc_y2(pixels, 0.0), rest_y2(pixels, 0.0),
-          count(pixels, 0) {}
+          count(pixels, 0), behind(pixels, 0.0) {}
     // Adds a round's paths, in sample order.
     void add(const std::vector<float>& samples);
-    // V_o (or V_m) of split.hpp, sum_p Var_p over the P pixels of one
-    // sample's luminance, from a part's sums per pixel (`sums`, RGB; `y2`,
-    // squared luminances) and the samples per pixel: P times the mean of the
-    // unbiased sample variances of the pixels that have two samples or more
-    // (which pixels those are does not depend on what they hold: where paths
-    // land is fixed by cl/sampling/burnin_film.cl). Subtracting sum_p mu_p^2 from the second moment
-    // instead is unbiased too, but at a few samples per pixel it is the difference of two large,
-    // noisy sums and came out 0 (no OMC samples at all) for a light's edges at 512x512. Without
-    // such pixels: the second moment, an overestimate.
+    // V_o (or V_m) of split.hpp over all pixels (PixelVariance), from a
+    // part's sums per pixel (`sums`, RGB; `y2`, squared luminances).
     double variance(const std::vector<double>& sums, const std::vector<double>& y2) const;
+    // The luminance of a part's sums (`sums`, RGB) at pixel p.
+    double luminance(const std::vector<double>& sums, std::size_t p) const;
     // A part's mean luminance per path, from its sums per pixel (`sums`, RGB).
     double mean(const std::vector<double>& sums) const;
     // The share of the MLT part's light, found or behind smooth
-    // transmitters, that lay behind them: s / (s + b_m), s and b_m the
-    // means of behind_specular and of the MLT part (0 where both are 0).
+    // transmitters, that lay behind them: behind_share of the means of
+    // `behind` and of the MLT part.
     double behind_specular_share() const;
 };
+
+// V_o (or V_m) of split.hpp, sum_p Var_p over P pixels of one sample's
+// luminance, gathered pixel by pixel from a part's sums: P times the mean of
+// the unbiased sample variances of the pixels that have two samples or more
+// (which pixels those are does not depend on what they hold: where paths
+// land is fixed by cl/sampling/burnin_film.cl). Subtracting sum_p mu_p^2
+// from the second moment instead is unbiased too, but at a few samples per
+// pixel it is the difference of two large, noisy sums and came out 0 (no
+// OMC samples at all) for a light's edges at 512x512. Without such pixels:
+// the second moment, an overestimate.
+class PixelVariance {
+  public:
+    // A pixel's sum of luminances y, of their squares y2, and its n samples.
+    void add(double y, double y2, std::uint64_t n);
+    double value() const;
+
+  private:
+    double within_ = 0, moment_ = 0, samples_ = 0;
+    std::uint64_t pixels_ = 0, used_ = 0;
+};
+
+// The share of light behind smooth transmitters in s + b, s and b the means
+// per path of that light and of the MLT part found (0 where both are 0).
+double behind_share(double behind_mean, double b);
 
 } // namespace smallmlt

@@ -161,8 +161,8 @@ void MltRenderer::prepare(RankGroup& ranks) {
 }
 
 double MltRenderer::mlt_relative_variance() const {
-    return mlt_part_relative_variance(burn_in_.mlt_variance(), burn_in_.mlt_part_b(),
-                                      double(pixels()));
+    const MltBurnIn::SplitEvidence& e = burn_in_.split_evidence();
+    return mlt_part_relative_variance(e.mlt_variance, e.mlt_part_b, double(pixels()));
 }
 
 std::unique_ptr<OmcSchedule> MltRenderer::make_omc_part(Split split) const {
@@ -173,7 +173,7 @@ std::unique_ptr<OmcSchedule> MltRenderer::make_omc_part(Split split) const {
     SequenceStart start = burn_in_omc_start(burn_in_film_, std::uint32_t(pixels()), samples);
     return std::make_unique<OmcSchedule>(
         std::make_unique<OmcPartTracer>(cl_, ds_, mlt_seed(opt_.seed, MltStream::Pixel),
-                                        OmcPart{split, &scene_, start}),
+                                        OmcPart{split, &scene_, start, &target_}),
         opt_.threads, opt_.omc_effort);
 }
 
@@ -240,6 +240,7 @@ void MltRenderer::step(std::uint32_t n) {
 SplitCosts MltRenderer::split_costs() const {
     SplitCosts c;
     c.omc_variance = burn_in_.omc_variance();
+    c.cell_variance = burn_in_.cell_variance();
     c.b = burn_in_.mlt_part_b();
     c.pixels = double(pixels());
     c.threads = double(opt_.threads);
@@ -278,7 +279,12 @@ MltReport MltRenderer::report() const {
     r.split_asked = opt_.split;
     r.burn_in_lit = burn_in_.sums().lum_fixed > 0;
     r.burn_in_samples = std::uint64_t(opt_.threads) * opt_.burn_in_iters;
-    r.burn_in_spp = double(opt_.threads) * std::max(1u, opt_.burn_in_iters) / double(pixels());
+    const std::vector<std::uint64_t>& landed = burn_in_.parts().count; // those the image takes
+    r.burn_in_spp =
+        burn_in_.keeps_parts()
+            ? double(std::accumulate(landed.begin(), landed.end(), std::uint64_t(0))) /
+                  double(pixels())
+            : double(opt_.threads) * std::max(1u, opt_.burn_in_iters) / double(pixels());
     r.chains = chains();
     r.proposals = opt_.proposals;
     r.steps = steps_run_;
@@ -290,6 +296,8 @@ MltReport MltRenderer::report() const {
     r.omc_part = omc_ != nullptr;
     r.omc_spp = omc_spp();
     r.omc_rate = omc_rate();
+    r.omc_cell_spp = omc_cell_spp();
+    r.omc_cell_rate = omc_cell_rate();
     r.mlt_relative_variance = omc_ ? mlt_relative_variance() : 0;
     r.behind_specular_share = omc_ ? behind_specular_share() : 0;
     r.kelemen = opt_.kelemen;
@@ -302,6 +310,8 @@ MltReport MltRenderer::report() const {
     }
     r.two_stage = opt_.target == Target::TwoStage;
     r.target_cells = target_cell_count(target_.cells(), ds_.frame.height);
+    r.omc_cells = target_.omc_cells();
+    r.omc_cell_share = double(target_.omc_pixels()) / double(pixels());
     return r;
 }
 
@@ -338,6 +348,7 @@ MltTally MltRenderer::mlt_tally() const {
     if (omc_) {
         Tally o = omc_->part().tally(); // spp, then sums per pixel and channel
         t.omc_spp = o.ints.at(0);
+        t.omc_cell_spp = o.ints.at(1);
         t.omc_sums = o.reals;
         const BurnInParts& b = burn_in_.parts();
         t.burn_in_landed = b.count;
@@ -418,8 +429,11 @@ Image MltRenderer::image_of(const Tally& summed, bool mlt, bool omc) const {
     }
     if (omc && omc_) {
         // Per-pixel samples and the burn-in's that landed in the pixel.
+        const std::uint32_t w = ds_.frame.width;
         for (std::size_t i = 0; i < n; ++i) {
-            double spp = double(t.omc_spp) + double(t.burn_in_landed[i / 3]);
+            const std::uint32_t p = std::uint32_t(i / 3);
+            const bool cell = target_.omc_pixel(p % w, p / w);
+            double spp = double(cell ? t.omc_cell_spp : t.omc_spp) + double(t.burn_in_landed[p]);
             if (spp > 0) img.rgb[i] += float((t.omc_sums[i] + t.burn_in_omc[i]) / spp);
         }
     }

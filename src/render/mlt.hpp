@@ -110,13 +110,16 @@ class MltRenderer : public Integrator {
     Image part_image(Part part) const;
     // The OMC part's per-pixel samples per MLT step (split.hpp's rule), once
     // the first step has measured a mutation's rays; 0 before.
-    double omc_rate() const { return omc_ ? omc_->rate() : 0; }
+    double omc_rate() const { return omc_ ? omc_->rate().film : 0; }
     std::uint32_t omc_spp() const { return omc_ ? omc_->part().spp() : 0; }
+    // Those of the cells the OMC part renders whole.
+    double omc_cell_rate() const { return omc_ ? omc_->rate().cells : 0; }
+    std::uint32_t omc_cell_spp() const { return omc_ ? omc_->part().cell_spp() : 0; }
     // The split in force: opt.split, with Auto decided by prepare().
     Split split() const { return split_; }
     // r and s of chains_pay (src/render/split.hpp), from the burn-in.
     double mlt_relative_variance() const;
-    double behind_specular_share() const { return burn_in_.parts().behind_specular_share(); }
+    double behind_specular_share() const { return burn_in_.split_evidence().behind_share; }
     const MltFilm& film() const { return film_; }
     // The strata: the tiles, and the tile of each work-group of chains.
     const StrataGrid& strata_grid() const { return grid_; }

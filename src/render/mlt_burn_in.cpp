@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numeric>
+#include <optional>
 
 namespace smallmlt {
 
@@ -86,40 +87,71 @@ void MltBurnIn::run(RankGroup& ranks, const MemoryPlan& plan, const SceneBuffers
                     const StrataGrid& grid, StrataBuffer& strata) {
     const std::uint32_t m = opt_.threads, iters = std::max(1u, opt_.burn_in_iters);
     const bool parts = keeps_parts();
-    // Rounds before `first` only measure the two-stage target's weights.
-    const std::uint32_t first = opt_.target == Target::TwoStage ? iters / 2 : 0;
+    // The rounds before `first` fix the target (the two-stage target's
+    // weights, the OMC part's cells); where it changes, b and the chains'
+    // starts take only the rounds after them.
+    const bool two_stage = opt_.target == Target::TwoStage, omc = omc_cells_in_force(opt_);
+    const std::uint32_t first = two_stage || omc ? iters / 2 : 0;
     const Round r(cl_, plan, scene, target, film, chains, grid, parts);
     const std::uint32_t tiles = grid.count();
-    StartPicks picks(film, scene.frame.width, scene.frame.height, grid);
+    std::optional<StartPicks> picks;
+    picks.emplace(film, scene.frame.width, scene.frame.height, grid);
     host_.resize(m);
     host_omc_.resize(parts ? 8 * m : 0);
     const std::uint32_t groups = std::uint32_t(strata.group_tiles().size());
     BurnInSums s;
     s.tile_lum.assign(tiles, 0);
-    BurnInSums ignored = s; // the two-stage target's rounds estimate no b
+    std::uint32_t counted = 0; // the first round of b's sums and of the picks
     for (std::uint32_t it = 0; it < iters; ++it) {
-        if (it == first && first > 0)
-            target.fix(ranks, scene.frame.width, scene.frame.height, parts_.rest,
-                       std::accumulate(parts_.count.begin(), parts_.count.end(), std::uint64_t(0)));
-        sample_round(r, it, parts, it < first ? ignored : s);
-        if (it < first) continue;
-        if (it == first && tiles > 1)
+        if (it == first && first > 0 && fix_target(ranks, scene, target, two_stage, omc)) {
+            // The target changed: b and the starts take the rounds after it.
+            s = BurnInSums();
+            s.tile_lum.assign(tiles, 0);
+            picks.emplace(film, scene.frame.width, scene.frame.height, grid);
+            counted = it;
+        }
+        sample_round(r, it, parts, s);
+        if (it == counted && tiles > 1)
             strata.deal(strata_group_tiles(strata_groups(round_lum_, groups), groups));
-        if (opt_.burn_in) picks.add_round(it, host_);
+        if (opt_.burn_in) picks->add_round(it, host_);
     }
     rounds_ = iters;
     if (opt_.burn_in)
-        write_picks(picks, chains, strata);
+        write_picks(*picks, chains, strata);
     else
         fresh_picks(chains); // round iters, after those that estimated b
-    s.samples = std::uint64_t(m) * (iters - first);
+    s.samples = std::uint64_t(m) * (iters - counted);
     sums_ = s;
     sums_.update_variance();
     if (parts) {
         mlt_part_b_ = parts_.mean(parts_.rest);
-        omc_variance_ = parts_.variance(parts_.omc, parts_.omc_y2);
-        mlt_variance_ = parts_.variance(parts_.rest, parts_.rest_y2);
+        // V_o of the film but the OMC part's cells, and V_c of those.
+        PixelVariance film, cells;
+        const std::uint32_t w = scene.frame.width;
+        for (std::size_t p = 0; p < parts_.count.size(); ++p)
+            (target.omc_pixel(std::uint32_t(p % w), std::uint32_t(p / w)) ? cells : film)
+                .add(parts_.luminance(parts_.omc, p), parts_.omc_y2[p], parts_.count[p]);
+        omc_variance_ = film.value();
+        cell_variance_ = cells.value();
+        if (target.omc_cells() == 0) evidence_ = split_evidence(parts_);
     }
+}
+
+MltBurnIn::SplitEvidence MltBurnIn::split_evidence(const BurnInParts& parts) {
+    return {parts.variance(parts.rest, parts.rest_y2), parts.mean(parts.rest),
+            parts.behind_specular_share()};
+}
+
+bool MltBurnIn::fix_target(RankGroup& ranks, const SceneBuffers& scene, TargetBuffer& target,
+                           bool two_stage, bool omc) {
+    target.fix(ranks, scene.frame.width, scene.frame.height, parts_, two_stage, omc);
+    if (target.omc_cells() == 0) return two_stage;
+    // The parts so far chose the cells, and their MLT parts there are the
+    // chains' no more: they are the evidence for --split auto, and the image
+    // and the split's costs take only the parts to come.
+    evidence_ = split_evidence(parts_);
+    parts_ = BurnInParts(parts_.count.size());
+    return true;
 }
 
 void MltBurnIn::write_picks(const StartPicks& picks, const Chains& chains,

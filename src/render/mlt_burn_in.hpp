@@ -63,8 +63,8 @@ class MltBurnIn {
     // `program` holds mlt_luminance and the picker's kernels; the parts per
     // pixel are kept for `pixels` pixels where `opt` needs them.
     MltBurnIn(const ClContext& cl, cl_program program, const MltOptions& opt, std::uint64_t pixels);
-    // Runs every round on the rank (ranks meet only where the two-stage
-    // target is fixed). The first round that estimates b deals the chains'
+    // Runs every round on the rank (ranks meet only where the target is
+    // fixed). The first round that estimates b deals the chains'
     // work-groups to the grid's tiles (strata_groups, by each tile's
     // luminance sum), and each chain picks its start among its tile's
     // samples. Without burn-in, the picks are fresh samples.
@@ -88,11 +88,19 @@ class MltBurnIn {
     // target needs them.
     const BurnInParts& parts() const { return parts_; }
     bool keeps_parts() const { return !parts_.count.empty(); }
-    // V_o and V_m of split.hpp and the MLT part's mean luminance, from the
-    // parts (0 without them).
+    // V_o and V_c of split.hpp (the film but the OMC part's cells, and
+    // those) and the MLT part's mean luminance, from the parts (0 without
+    // them).
     double omc_variance() const { return omc_variance_; }
-    double mlt_variance() const { return mlt_variance_; }
+    double cell_variance() const { return cell_variance_; }
     double mlt_part_b() const { return mlt_part_b_; }
+    // What --split auto decides by (split.hpp, chains_pay): V_m, the MLT
+    // part's mean luminance and the share of its light behind smooth
+    // transmitters, from the parts before any cell went to the OMC part.
+    struct SplitEvidence {
+        double mlt_variance = 0, mlt_part_b = 0, behind_share = 0;
+    };
+    const SplitEvidence& split_evidence() const { return evidence_; }
 
   private:
     // What the rounds of one run() or restart() share.
@@ -108,6 +116,13 @@ class MltBurnIn {
         ClBuffer lum, omc;
     };
     void sample_round(const Round& r, std::uint32_t it, bool parts, BurnInSums& s);
+    // Fixes the target from the parts so far (TargetBuffer::fix); where
+    // cells go to the OMC part, those parts are dropped. True where the
+    // target changed (the two-stage weights, cells of weight 0): samples
+    // drawn before then are then not the target's.
+    bool fix_target(RankGroup& ranks, const SceneBuffers& scene, TargetBuffer& target,
+                    bool two_stage, bool omc);
+    static SplitEvidence split_evidence(const BurnInParts& parts);
     // Each chain c's pick is (round rounds_, c), a fresh sample; then rounds_ + 1.
     void fresh_picks(const Chains& chains);
     // Each chain's pick drawn by `picks` (its tile's, by `strata`).
@@ -119,7 +134,8 @@ class MltBurnIn {
     ClKernel k_lum_;
     BurnInParts parts_;
     BurnInSums sums_;
-    double omc_variance_ = 0, mlt_variance_ = 0, mlt_part_b_ = 0;
+    double omc_variance_ = 0, cell_variance_ = 0, mlt_part_b_ = 0;
+    SplitEvidence evidence_;
     std::uint32_t rounds_ = 0; // rounds run, those of restarts included
     std::vector<float> host_, host_omc_;
     std::vector<double> round_lum_;

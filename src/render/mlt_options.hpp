@@ -3,6 +3,7 @@
 #pragma once
 #include "device/memory_plan.hpp"
 #include "render/mlt_film.hpp"
+#include "render/omc_cells.hpp"
 #include "render/split.hpp"
 #include "render/target.hpp"
 
@@ -75,6 +76,9 @@ struct MltOptions {
     // the time the rule of split.hpp gives it, and by the burn-in's paths.
     Split split = kDefaultSplit;
     double omc_effort = 1.0;
+    // With a split, the cells whose MLT part path tracing renders well go
+    // to the OMC part whole (src/render/omc_cells.hpp).
+    bool omc_cells = kDefaultOmcCells;
     // The chains' target (src/render/target.hpp).
     Target target = kDefaultTarget;
     // Kelemen's weights (Kelemen et al. 2002, section 5; cl/mlt/mlt_step.cl):
@@ -111,6 +115,13 @@ inline bool kelemen_in_force(const MltOptions& opt) {
     return opt.kelemen && large_step_of(opt) > 0;
 }
 
+// The OMC part's cells in force: asked for, with a split and burn-in rounds
+// to choose them from before the rounds that estimate b.
+inline bool omc_cells_in_force(const MltOptions& opt) {
+    return opt.omc_cells && opt.split != Split::None && opt.split != Split::All &&
+           opt.burn_in_iters >= 2;
+}
+
 // What the memory plan needs to know of a render of `opt` (one definition
 // for the renderer, `render --threads auto` and `budget`).
 inline ChainShape mlt_chain_shape(const MltOptions& opt, const MltTestHooks& hooks = {}) {
@@ -120,7 +131,8 @@ inline ChainShape mlt_chain_shape(const MltOptions& opt, const MltTestHooks& hoo
     s.float32_states = hooks.float32_states;
     s.film_atomics64 = opt.film_atomics64;
     s.omc_part = opt.split != Split::None;
-    s.target_cells = opt.target == Target::TwoStage ? kTargetMaxCells : 1;
+    s.target_cells =
+        opt.target == Target::TwoStage || omc_cells_in_force(opt) ? kTargetMaxCells : 1;
     s.film_layers = kelemen_in_force(opt) ? 2 : 1;
     s.strata = opt.strata != 0;
     return s;

@@ -108,6 +108,14 @@ std::string mlt_summary(const MltReport& r) {
         std::snprintf(buf, sizeof buf, "; stratified, %u tiles", r.strata);
         out += buf;
     }
+    if (r.omc_cells > 0) {
+        std::snprintf(buf, sizeof buf,
+                      "; %u of %u cells (%.3g%% of the film) to the OMC part whole, %u spp there "
+                      "(%.3g per step)",
+                      r.omc_cells, r.target_cells, 100.0 * r.omc_cell_share, r.omc_cell_spp,
+                      r.omc_cell_rate);
+        out += buf;
+    }
     if (r.two_stage && r.steps > 0) {
         std::snprintf(buf, sizeof buf, "; target two-stage (%u cells)", r.target_cells);
         out += buf;

@@ -28,11 +28,15 @@ struct MltReport {
     bool omc_part = false;                        // a split's OMC part
     std::uint32_t omc_spp = 0;
     double omc_rate = 0, mlt_relative_variance = 0, behind_specular_share = 0;
+    std::uint32_t omc_cell_spp = 0; // in the cells the OMC part renders whole
+    double omc_cell_rate = 0;
     bool kelemen = false;
     float kelemen_pb = 0;
     std::uint32_t strata = 1; // tiles of stratified MLT
     bool two_stage = false;
     std::uint32_t target_cells = 1;
+    std::uint32_t omc_cells = 0; // cells the OMC part renders whole
+    double omc_cell_share = 0;   // the share of the film they cover
 };
 
 // The summary line: chains, throughput, acceptance, b, stuck chains, the

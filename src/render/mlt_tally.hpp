@@ -22,11 +22,11 @@ struct MltTally {
     // luminances.
     std::uint64_t burn_in_samples = 0;
     double burn_in_lum2 = 0;
-    // With a split: the OMC part's samples per pixel and per pixel and
-    // channel its sums; per pixel the burn-in's samples that landed in it,
-    // and per pixel and channel their OMC parts (with Split::All, whole
-    // paths).
-    std::uint64_t omc_spp = 0;
+    // With a split: the OMC part's samples per pixel (on the film, and on the
+    // pixels of the cells it renders whole) and per pixel and channel its
+    // sums; per pixel the burn-in's samples that landed in it, and per pixel
+    // and channel their OMC parts (with Split::All, whole paths).
+    std::uint64_t omc_spp = 0, omc_cell_spp = 0;
     std::vector<double> omc_sums;
     std::vector<std::uint64_t> burn_in_landed;
     std::vector<double> burn_in_omc;
@@ -52,6 +52,7 @@ struct MltTally {
         v(t.large);
         v(t.burn_in_lum2);
         v(t.omc_spp);
+        v(t.omc_cell_spp);
         v(t.omc_sums);
         v(t.burn_in_landed);
         v(t.burn_in_omc);

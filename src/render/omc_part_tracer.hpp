@@ -21,6 +21,9 @@ struct OmcPart {
     // Each pixel's first Sobol sample number: those before it are the
     // burn-in's (cl/sampling/burnin_film.cl).
     SequenceStart start;
+    // The chains' target: its cells of weight 0 are rendered whole
+    // (src/render/omc_cells.hpp).
+    const TargetBuffer* target = nullptr;
 };
 
 class OmcPartTracer {
@@ -29,19 +32,30 @@ class OmcPartTracer {
     OmcPartTracer(const ClContext& cl, const DeviceScene& ds, std::uint64_t seed,
                   const OmcPart& part);
 
-    // Adds n samples per pixel into the host's sums.
-    void add_samples(std::uint32_t n);
-    std::uint32_t spp() const { return passes_.spp(); }
+    // Adds n samples to each pixel but those of the cells it renders whole
+    // (src/render/omc_cells.hpp), into the host's sums.
+    void add_samples(std::uint32_t n) { add(n, false); }
+    // Adds n samples to each pixel of those cells.
+    void add_cell_samples(std::uint32_t n) { add(n, true); }
+    // Samples per pixel: of the film but the cells; of the cells.
+    std::uint32_t spp() const { return spp_; }
+    std::uint32_t cell_spp() const { return cell_spp_; }
+    // The pixels of the cells it renders whole.
+    std::uint64_t cell_pixels() const;
     const PtNumbering& numbering() const { return passes_.numbering(); }
     std::uint64_t rays() const { return passes_.rays(); }
     std::uint64_t pixels() const { return passes_.pixels(); }
-    // The samples per pixel (ints[0]) and the sums of R, G, B per pixel
-    // (reals), as PathTracer::tally.
+    // The samples per pixel (ints[0]), those of the cells' pixels (ints[1]),
+    // and the sums of R, G, B per pixel (reals).
     Tally tally() const;
 
   private:
+    void add(std::uint32_t n, bool cells_only);
+
     const ClContext& cl_;
+    const TargetBuffer* target_;
     PtPasses passes_;
+    std::uint32_t spp_ = 0, cell_spp_ = 0;
     ClBuffer scratch_;         // one band of the film on the device
     std::vector<double> sums_; // the film: sums of R, G, B per pixel
 };

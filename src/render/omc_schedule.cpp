@@ -15,22 +15,38 @@ OmcSchedule::OmcSchedule(std::unique_ptr<OmcPartTracer> part, std::uint32_t thre
     : part_(std::move(part)), threads_(threads), effort_(effort) {}
 
 void OmcSchedule::after_step(bool chains, const std::function<SplitCosts()>& costs) {
-    const std::uint64_t p = part_->pixels();
+    const std::uint64_t p = part_->pixels(), pc = part_->cell_pixels();
     if (!chains) {
         owed_ += double(threads_) / double(p);
-    } else if (rate_ == 0 && part_->spp() == 0) {
+        owed_cells_ += pc > 0 ? double(threads_) / double(p) : 0.0;
+    } else if (!measured_) {
+        measured_ = true;
         SplitCosts c = costs();
-        // One sample per pixel measures its rays (and is kept).
+        // One sample per pixel, on the film and in the cells, measures
+        // their rays (and is kept).
         part_->add_samples(1);
-        c.omc_rays = double(part_->rays()) / c.pixels;
+        const double film = double(part_->rays());
+        c.omc_rays = p > pc ? film / double(p - pc) : 0;
+        if (pc > 0) {
+            part_->add_cell_samples(1);
+            c.cell_rays = (double(part_->rays()) - film) / double(pc);
+        }
+        c.cell_pixels = double(pc);
         rate_ = omc_samples_per_step(c, effort_);
-        owed_ = std::max(0.0, rate_ - 1);
+        owed_ = std::max(0.0, rate_.film - 1);
+        owed_cells_ = pc > 0 ? std::max(0.0, rate_.cells - 1) : 0.0;
     } else {
-        owed_ += rate_;
+        owed_ += rate_.film;
+        owed_cells_ += rate_.cells;
     }
     for (std::uint32_t k = omc_chunk(part_->spp(), p); owed_ >= k; k = omc_chunk(part_->spp(), p)) {
         part_->add_samples(k);
         owed_ -= k;
+    }
+    for (std::uint32_t k = omc_chunk(part_->cell_spp(), pc); owed_cells_ >= k;
+         k = omc_chunk(part_->cell_spp(), pc)) {
+        part_->add_cell_samples(k);
+        owed_cells_ -= k;
     }
 }
 

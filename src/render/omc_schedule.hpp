@@ -25,22 +25,26 @@ class OmcSchedule {
     // `threads`: the chains' work-items; `effort`: --omc-effort.
     OmcSchedule(std::unique_ptr<OmcPartTracer> part, std::uint32_t threads, double effort);
 
-    // After one MLT step. With chains, the part is owed the rule's rate of
+    // After one MLT step. With chains, the part is owed the rule's rates of
     // samples per pixel (chosen at the first step from `costs`, with the
-    // rays of one sample per pixel that it measures); without (Split::All,
+    // rays of one sample per pixel, and one more in the cells, that it
+    // measures); without (Split::All,
     // or no light in the MLT part), a step's time: one path per thread.
     // Whole chunks run as soon as they are owed, so the samples, and the
     // image, do not depend on how steps are grouped into passes.
     void after_step(bool chains, const std::function<SplitCosts()>& costs);
 
-    // Samples per pixel per MLT step (0 before the first step with chains).
-    double rate() const { return rate_; }
+    // Samples per pixel per MLT step, on the film and more in the cells the
+    // OMC part renders whole (0 before the first step with chains).
+    const OmcRates& rate() const { return rate_; }
     const OmcPartTracer& part() const { return *part_; }
 
   private:
     std::unique_ptr<OmcPartTracer> part_;
     std::uint32_t threads_;
-    double effort_, rate_ = 0, owed_ = 0;
+    double effort_, owed_ = 0, owed_cells_ = 0;
+    OmcRates rate_;
+    bool measured_ = false;
 };
 
 } // namespace smallmlt

@@ -15,17 +15,19 @@ std::vector<std::string> pt_program_files(PtSampler sampler) {
 
 PtPasses::PtPasses(const ClContext& cl, const DeviceScene& ds, const SceneBuffers& scene,
                    PtSampler sampler, const std::string& defines, PtNumbering numbering,
-                   std::uint64_t band_pixels, std::uint64_t stats_bytes)
+                   std::uint64_t band_pixels, std::uint64_t stats_bytes,
+                   const TargetBuffer* omc_target)
     : cl_(cl), ds_(ds), scene_(scene),
       program_(cl.build(pt_program_files(sampler), ds.layout.defines() + defines)),
       kernel_(program_.p, "pt_render"), stats_(cl, CL_MEM_READ_WRITE, stats_bytes),
-      numbering_(numbering), band_pixels_(band_pixels) {
+      numbering_(numbering), band_pixels_(band_pixels), omc_target_(omc_target) {
     stats_.fill_zero(cl_);
 }
 
 void PtPasses::add_samples(std::uint32_t n,
                            const std::function<const ClBuffer&(std::uint64_t)>& band,
-                           const std::function<void(std::uint64_t, std::uint64_t)>& after) {
+                           const std::function<void(std::uint64_t, std::uint64_t)>& after,
+                           bool cells_only) {
     // A device that ends loops after a count per work-item
     // (DeviceInfo::loop_iteration_limit) gets one sample per launch: a path
     // stays well within the count, a pixel's many samples would not. The
@@ -33,18 +35,25 @@ void PtPasses::add_samples(std::uint32_t n,
     // order (the OMC part's host sums, added per launch, round otherwise).
     const std::uint32_t per_launch = cl_.device().loop_iteration_limit ? 1u : n;
     for (std::uint32_t done = 0; done < n; done += per_launch)
-        launch(std::min(per_launch, n - done), band, after);
+        launch(std::min(per_launch, n - done), band, after, cells_only);
 }
 
 void PtPasses::launch(std::uint32_t n, const std::function<const ClBuffer&(std::uint64_t)>& band,
-                      const std::function<void(std::uint64_t, std::uint64_t)>& after) {
+                      const std::function<void(std::uint64_t, std::uint64_t)>& after,
+                      bool cells_only) {
     cl_ulong seed = numbering_.seed;
     cl_uint first_sample = spp_, count = n;
     for (std::uint64_t first = 0, b = 0; first < pixels(); first += band_pixels_, ++b) {
         std::uint64_t size = std::min(band_pixels_, pixels() - first);
-        kernel_.set_args(scene_, seed, first_sample, count, cl_uint(numbering_.offset),
-                         cl_uint(numbering_.stride), numbering_.late, cl_uint(first), cl_uint(size),
-                         band(b), stats_);
+        auto set = [&](const auto&... omc_target) {
+            kernel_.set_args(scene_, seed, first_sample, count, cl_uint(numbering_.offset),
+                             cl_uint(numbering_.stride), numbering_.late, cl_uint(first),
+                             cl_uint(size), band(b), stats_, omc_target...);
+        };
+        if (omc_target_)
+            set(*omc_target_, cl_uint(cells_only));
+        else
+            set();
         kernel_.enqueue(cl_, size);
         after(first, size);
     }

@@ -6,6 +6,7 @@
 #pragma once
 #include "device/ocl.hpp"
 #include "device/scene_buffers.hpp"
+#include "render/target_buffer.hpp"
 #include "scene/device_scene.hpp"
 #include "shared_types.h"
 
@@ -38,16 +39,20 @@ struct PtNumbering {
 class PtPasses {
   public:
     // `defines` after the scene layout's; the film in bands of band_pixels;
-    // stats_bytes from the memory plan.
+    // stats_bytes from the memory plan. The OMC part (PT_OMC_PART) takes
+    // the chains' target, whose cells of weight 0 it renders whole.
     PtPasses(const ClContext& cl, const DeviceScene& ds, const SceneBuffers& scene,
              PtSampler sampler, const std::string& defines, PtNumbering numbering,
-             std::uint64_t band_pixels, std::uint64_t stats_bytes);
+             std::uint64_t band_pixels, std::uint64_t stats_bytes,
+             const TargetBuffer* omc_target = nullptr);
 
     // Adds n samples per pixel (numbered spp() .. spp() + n - 1), band by
     // band: band b's pixels go to band(b); after(first, size) runs once its
-    // launch is queued (the OMC part reads its scratch band there).
+    // launch is queued (the OMC part reads its scratch band there). With
+    // `cells_only`, only the pixels of the OMC part's cells take them.
     void add_samples(std::uint32_t n, const std::function<const ClBuffer&(std::uint64_t)>& band,
-                     const std::function<void(std::uint64_t, std::uint64_t)>& after);
+                     const std::function<void(std::uint64_t, std::uint64_t)>& after,
+                     bool cells_only = false);
 
     std::uint32_t spp() const { return spp_; }
     const PtNumbering& numbering() const { return numbering_; }
@@ -66,9 +71,10 @@ class PtPasses {
     ClBuffer stats_; // PT_STAT_COUNT per work-group
     PtNumbering numbering_;
     std::uint64_t band_pixels_;
+    const TargetBuffer* omc_target_;
     std::uint32_t spp_ = 0;
     void launch(std::uint32_t n, const std::function<const ClBuffer&(std::uint64_t)>& band,
-                const std::function<void(std::uint64_t, std::uint64_t)>& after);
+                const std::function<void(std::uint64_t, std::uint64_t)>& after, bool cells_only);
     std::uint64_t stat(int which) const; // sum of the rows of stats
 };
 

@@ -49,13 +49,27 @@ std::string split_defines(Split s) {
     return "#define PATH_SPLIT " + std::to_string(split_vertices(s)) + "\n";
 }
 
-double omc_samples_per_step(const SplitCosts& c, double effort) {
-    if (!(c.omc_rays > 0) || !(c.pixels > 0)) return 0;
-    if (!(c.b > 0) || !(c.mutation_rays > 0)) return effort > 0 ? 1.0 : 0.0;
-    double a = std::max(c.omc_variance, 0.0) * c.pixels * c.omc_rays;
-    double cm = kChainCorrelation * c.b * c.b * c.pixels * c.pixels * c.mutation_rays;
-    double ratio = std::clamp(std::sqrt(a / cm), kOmcMinTimeRatio, kOmcMaxTimeRatio) * effort;
-    return ratio * c.threads * c.mutation_rays / (c.pixels * c.omc_rays);
+OmcRates omc_samples_per_step(const SplitCosts& c, double effort) {
+    const double film_pixels = c.pixels - c.cell_pixels;
+    if (!(c.omc_rays > 0) || !(film_pixels > 0)) return {};
+    if (!(c.b > 0) || !(c.mutation_rays > 0)) return {effort > 0 ? 1.0 : 0.0, 0.0};
+    const double cm = kChainCorrelation * c.b * c.b * c.pixels * c.pixels * c.mutation_rays;
+    double film = std::sqrt(std::max(c.omc_variance, 0.0) * film_pixels * c.omc_rays / cm);
+    double cells = c.cell_pixels > 0 && c.cell_rays > 0
+                       ? std::sqrt(kPixelStratification * std::max(c.cell_variance, 0.0) *
+                                   c.cell_pixels * c.cell_rays / cm)
+                       : 0.0;
+    if (film + cells > kOmcMaxTimeRatio) { // the parts' optimum under the cap
+        const double scale = kOmcMaxTimeRatio / (film + cells);
+        film *= scale;
+        cells *= scale;
+    }
+    film = std::max(film, kOmcMinTimeRatio);
+    const double per_time = c.threads * c.mutation_rays * effort;
+    OmcRates r;
+    r.film = film * per_time / (film_pixels * c.omc_rays);
+    if (cells > 0) r.cells = cells * per_time / (c.cell_pixels * c.cell_rays);
+    return r;
 }
 
 } // namespace smallmlt

@@ -56,6 +56,14 @@ std::string split_defines(Split s);
 // at least kOmcMinTimeRatio: V_o is 0 where the burn-in's paths missed what
 // the OMC part renders (water-spark's light covers 3% of a pixel, and 2^19
 // paths hit it about once), and the OMC part must still converge.
+// With cells the OMC part renders whole (src/render/omc_cells.hpp), those
+// P_c pixels are a part of their own, A_c = g V_c P_c c_c (V_c, c_c as V_o,
+// c_o, for whole paths there; g = kPixelStratification, as the cells are
+// chosen where the chains' part is smooth enough for per-pixel samples),
+// and V_o, c_o are those of the other P - P_c pixels. The parts' times are then in proportion to
+// sqrt(A), sqrt(A_c) and sqrt(C), with the cap on the OMC part's two together and the floor on the
+// film's. The other pixels take n_o samples per step and the cells' pixels
+// n_c (omc_samples_per_step).
 struct SplitCosts {
     double omc_variance = 0;  // V_o
     double b = 0;             // the MLT part's mean luminance
@@ -63,6 +71,9 @@ struct SplitCosts {
     double omc_rays = 0;      // c_o
     double mutation_rays = 0; // c_m
     double threads = 0;       // T
+    double cell_variance = 0; // V_c
+    double cell_pixels = 0;   // P_c
+    double cell_rays = 0;     // c_c
 };
 constexpr double kChainCorrelation = 8.0;     // tau
 constexpr double kOmcMaxTimeRatio = 1.0;      // the OMC part takes at most the chains' time
@@ -92,9 +103,18 @@ constexpr double kOmcMinTimeRatio = 1.0 / 16; // and at least a 16th of it
 // the scenes without them.
 constexpr double kChainsPayRatio = 4.0;
 constexpr double kChainsPayBehindShare = 0.02;
+// The stratification's gain that threshold implies: per-pixel Sobol samples
+// of the MLT part have this share of independent samples' variance.
+constexpr double kPixelStratification = kChainsPayRatio / kChainCorrelation;
 double mlt_part_relative_variance(double mlt_variance, double b, double pixels);
 bool chains_pay(double relative_variance, double behind_specular_share);
-// n_o, times `effort` (--omc-effort; 1 is the rule).
-double omc_samples_per_step(const SplitCosts& c, double effort);
+// The OMC part's samples per pixel per step: n_o on the film but the cells,
+// n_c on the cells' pixels.
+struct OmcRates {
+    double film = 0, cells = 0;
+};
+// The rates of the rule's times t_o / t_m and t_c / t_m, times `effort`
+// (--omc-effort; 1 is the rule).
+OmcRates omc_samples_per_step(const SplitCosts& c, double effort);
 
 } // namespace smallmlt

@@ -2,6 +2,7 @@
 
 #include "base/color.hpp"
 #include "base/error.hpp"
+#include "target_cells.h"
 
 #include <algorithm>
 
@@ -46,8 +47,7 @@ std::vector<float> target_weights(const TargetCells& cells, std::uint32_t width,
     for (std::uint32_t y = 0; y < height; ++y)
         for (std::uint32_t x = 0; x < width; ++x) {
             std::size_t p = 3 * (std::size_t(y) * width + x);
-            std::uint32_t c =
-                cells.shift >= 31 ? 0 : (y >> cells.shift) * cells.columns + (x >> cells.shift);
+            std::uint32_t c = target_cell(&cells, x, y);
             double l = rgb_luminance(rgb_sums[p], rgb_sums[p + 1], rgb_sums[p + 2]);
             lum[c] += l;
             px[c] += 1;

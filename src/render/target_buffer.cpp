@@ -1,6 +1,10 @@
 #include "render/target_buffer.hpp"
 
+#include "render/omc_cells.hpp"
 #include "render/target.hpp"
+#include "target_cells.h"
+
+#include <numeric>
 
 namespace smallmlt {
 
@@ -10,16 +14,58 @@ TargetBuffer::TargetBuffer(const ClContext& cl, std::uint64_t bytes)
     weight_.write(cl_, ones.data());
 }
 
+namespace {
+
+// The parts every rank gathered, summed over the ranks (the sums a
+// decision reads: the MLT part's and the landings).
+BurnInParts ranks_parts(RankGroup& ranks, const BurnInParts& parts) {
+    const std::size_t pixels = parts.count.size();
+    std::vector<double> all(parts.rest);
+    all.insert(all.end(), parts.rest_y2.begin(), parts.rest_y2.end());
+    all.insert(all.end(), parts.behind.begin(), parts.behind.end());
+    all.insert(all.end(), parts.count.begin(), parts.count.end());
+    ranks.sum_all(all); // counts are whole numbers, exact in double below 2^53
+    BurnInParts sum(pixels);
+    auto at = all.begin();
+    for (std::vector<double>* v : {&sum.rest, &sum.rest_y2, &sum.behind}) {
+        std::copy(at, at + std::ptrdiff_t(v->size()), v->begin());
+        at += std::ptrdiff_t(v->size());
+    }
+    for (std::size_t p = 0; p < pixels; ++p)
+        sum.count[p] = std::uint64_t(*at++);
+    return sum;
+}
+
+} // namespace
+
 void TargetBuffer::fix(RankGroup& ranks, std::uint32_t width, std::uint32_t height,
-                       const std::vector<double>& rgb_sums, std::uint64_t samples) {
-    std::vector<double> all = rgb_sums;
-    all.push_back(double(samples)); // ranks may run different threads
-    ranks.sum_all(all);
-    cells_ = target_cells(width, height, std::uint64_t(all.back()));
-    all.pop_back();
-    std::vector<float> w = target_weights(cells_, width, height, all);
+                       const BurnInParts& parts, bool two_stage, bool omc) {
+    const BurnInParts all = ranks_parts(ranks, parts);
+    cells_ = target_cells(width, height,
+                          std::accumulate(all.count.begin(), all.count.end(), std::uint64_t(0)));
+    const std::uint32_t n = target_cell_count(cells_, height);
+    std::vector<float> w =
+        two_stage ? target_weights(cells_, width, height, all.rest) : std::vector<float>(n, 1.0f);
+    whole_.assign(omc ? n : 0, false);
+    omc_cells_ = 0;
+    omc_pixels_ = 0;
+    if (omc) {
+        whole_ = smallmlt::omc_cells(cells_, width, height, all);
+        for (std::uint32_t c = 0; c < n; ++c)
+            if (whole_[c]) {
+                w[c] = 0.0f;
+                ++omc_cells_;
+            }
+        for (std::uint32_t y = 0; y < height; ++y)
+            for (std::uint32_t x = 0; x < width; ++x)
+                omc_pixels_ += omc_pixel(x, y);
+    }
     w.resize(weight_.bytes() / sizeof(float), 1.0f); // at most kTargetMaxCells
     weight_.write(cl_, w.data());
+}
+
+bool TargetBuffer::omc_pixel(std::uint32_t x, std::uint32_t y) const {
+    return !whole_.empty() && whole_[target_cell(&cells_, x, y)];
 }
 
 std::vector<float> TargetBuffer::read() const {

@@ -1,9 +1,11 @@
 // The chains' target on the device (src/render/target.hpp): the weight w
 // per cell and the cells, bound as the kernels' (weight, cells) pair. It
-// starts as one cell of weight 1, the luminance; the two-stage target fixes
-// its cells and weights from the burn-in's first half.
+// starts as one cell of weight 1, the luminance; the two-stage target and
+// the cells of the OMC part (src/render/omc_cells.hpp) fix its cells and
+// weights from the burn-in's first half.
 #pragma once
 #include "device/ocl.hpp"
+#include "render/burn_in.hpp"
 #include "render/ranks.hpp"
 #include "shared_types.h"
 
@@ -16,11 +18,17 @@ class TargetBuffer {
   public:
     // Room for `bytes` of weights (kTargetMaxCells floats or one).
     TargetBuffer(const ClContext& cl, std::uint64_t bytes);
-    // Cells and weights from the per-pixel RGB sums of the burn-in's MLT
-    // parts (BurnInParts::rest) and the samples they hold, summed over every
-    // rank, so that all ranks fix one target.
-    void fix(RankGroup& ranks, std::uint32_t width, std::uint32_t height,
-             const std::vector<double>& rgb_sums, std::uint64_t samples);
+    // Cells and weights from the burn-in's parts, summed over every rank so
+    // that all ranks fix one target: the two-stage target's weights where
+    // `two_stage` (else 1), and 0 in the cells the OMC part renders whole
+    // where `omc`.
+    void fix(RankGroup& ranks, std::uint32_t width, std::uint32_t height, const BurnInParts& parts,
+             bool two_stage, bool omc);
+    // The cells of weight 0 and the pixels they cover.
+    std::uint32_t omc_cells() const { return omc_cells_; }
+    std::uint64_t omc_pixels() const { return omc_pixels_; }
+    // Whether pixel (x, y) lies in a cell of weight 0.
+    bool omc_pixel(std::uint32_t x, std::uint32_t y) const;
     const ClBuffer& weights() const { return weight_; }
     const TargetCells& cells() const { return cells_; }
     // The weights as the device holds them, one per cell (and 1 beyond).
@@ -30,6 +38,9 @@ class TargetBuffer {
     const ClContext& cl_;
     ClBuffer weight_;
     TargetCells cells_;
+    std::vector<bool> whole_; // per cell: weight 0 (empty: none)
+    std::uint32_t omc_cells_ = 0;
+    std::uint64_t omc_pixels_ = 0;
 };
 
 inline void kernel_arg(ClKernel& k, cl_uint& i, const TargetBuffer& t) {
