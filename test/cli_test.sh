@@ -133,6 +133,7 @@ check split_name 2 "--split indirect: expected none, visible, direct, all or aut
 check omc_effort_negative 2 "--omc-effort: '-1' is not a number >= 0" -- "$BIN" render scenes/cornell.scene --omc-effort -1
 check split_summary 0 "split visible: OMC part" -- "$BIN" render scenes/cornell.scene --split visible --threads 1024 --burn-in-iters 2 --width 16 --height 16 --spp 8 --out "$DIR/split.png"
 check target_name 2 "--target: 'kelemen' is not a target (luminance or two-stage)" -- "$BIN" render scenes/cornell.scene --target kelemen
+check omc_cells_name 2 "--omc-cells auto: expected on or off" -- "$BIN" render scenes/cornell.scene --omc-cells auto
 check weights_name 2 "--weights: 'veach' is not a weighting (expected or kelemen)" -- "$BIN" render scenes/cornell.scene --weights veach
 check target_summary 0 "target two-stage (" -- "$BIN" render scenes/cornell-water.scene --split visible --target two-stage --threads 1024 --burn-in-iters 4 --width 16 --height 16 --spp 8 --out "$DIR/two-stage.png"
 check weights_summary 0 "Kelemen's weights (p b0 = " -- "$BIN" render scenes/cornell-water.scene --split visible --weights kelemen --threads 1024 --burn-in-iters 4 --width 16 --height 16 --spp 8 --out "$DIR/kelemen.png"

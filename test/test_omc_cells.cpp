@@ -103,8 +103,8 @@ TEST(OmcCells, RelativeVarianceIsWithinPixels) {
 // to the OMC part: its per-pixel samples trace the whole path there, and
 // the image (the burn-in's second half and the OMC part's samples; the
 // chains find no light, b = 0) is the closed form of every L to the depth,
-// within 0.3%. The first half of the burn-in, which chose the cells, is not
-// in it: half the rounds count.
+// within 0.3%. The burn-in's rounds that chose the cells (4, before the 8
+// of --burn-in-iters) are not in it.
 TEST(OmcCells, FurnaceIsRenderedWholeByTheOmcPart) {
     const int depth = 4;
     DeviceScene ds = prepare_scene(test::scene("furnace", 16, 16, depth));
@@ -129,7 +129,7 @@ TEST(OmcCells, FurnaceIsRenderedWholeByTheOmcPart) {
     EXPECT_DOUBLE_EQ(r.omc_cell_share, 1.0);
     EXPECT_EQ(mlt.b(), 0.0);
     EXPECT_NEAR(got, want, 0.003 * want);
-    EXPECT_DOUBLE_EQ(r.burn_in_spp, 4096.0 * 4 / 256);
+    EXPECT_DOUBLE_EQ(r.burn_in_spp, 4096.0 * 8 / 256);
     // The burn-in's paths in those cells: whole in their OMC part (1%: 64
     // paths a pixel), nothing left for the chains.
     const BurnInParts& parts = mlt.burn_in_parts();

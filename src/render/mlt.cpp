@@ -168,7 +168,7 @@ double MltRenderer::mlt_relative_variance() const {
 std::unique_ptr<OmcSchedule> MltRenderer::make_omc_part(Split split) const {
     // Each pixel's Sobol sequence goes on after the burn-in's samples (and
     // the fresh starts of --burn-in none, round T).
-    const std::uint32_t rounds = std::max(1u, opt_.burn_in_iters);
+    const std::uint32_t rounds = burn_in_rounds(opt_);
     std::uint64_t samples = std::uint64_t(opt_.threads) * rounds + (opt_.burn_in ? 0 : chains());
     SequenceStart start = burn_in_omc_start(burn_in_film_, std::uint32_t(pixels()), samples);
     return std::make_unique<OmcSchedule>(
@@ -278,13 +278,12 @@ MltReport MltRenderer::report() const {
     r.split = split_;
     r.split_asked = opt_.split;
     r.burn_in_lit = burn_in_.sums().lum_fixed > 0;
-    r.burn_in_samples = std::uint64_t(opt_.threads) * opt_.burn_in_iters;
+    r.burn_in_samples = std::uint64_t(opt_.threads) * burn_in_rounds(opt_);
     const std::vector<std::uint64_t>& landed = burn_in_.parts().count; // those the image takes
-    r.burn_in_spp =
-        burn_in_.keeps_parts()
-            ? double(std::accumulate(landed.begin(), landed.end(), std::uint64_t(0))) /
-                  double(pixels())
-            : double(opt_.threads) * std::max(1u, opt_.burn_in_iters) / double(pixels());
+    r.burn_in_spp = burn_in_.keeps_parts()
+                        ? double(std::accumulate(landed.begin(), landed.end(), std::uint64_t(0))) /
+                              double(pixels())
+                        : double(opt_.threads) * burn_in_rounds(opt_) / double(pixels());
     r.chains = chains();
     r.proposals = opt_.proposals;
     r.steps = steps_run_;

@@ -122,6 +122,13 @@ inline bool omc_cells_in_force(const MltOptions& opt) {
            opt.burn_in_iters >= 2;
 }
 
+// The burn-in's rounds: --burn-in-iters, and with the OMC part's cells
+// half as many more before them, which choose the cells (MltBurnIn::run).
+inline std::uint32_t burn_in_rounds(const MltOptions& opt) {
+    const std::uint32_t iters = opt.burn_in_iters > 1 ? opt.burn_in_iters : 1;
+    return omc_cells_in_force(opt) ? iters + iters / 2 : iters;
+}
+
 // What the memory plan needs to know of a render of `opt` (one definition
 // for the renderer, `render --threads auto` and `budget`).
 inline ChainShape mlt_chain_shape(const MltOptions& opt, const MltTestHooks& hooks = {}) {

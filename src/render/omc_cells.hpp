@@ -10,10 +10,11 @@
 // aimed at lay behind smooth transmitters. A cell where the paths found no
 // MLT-part light stays with the chains: light there is rare, and finding
 // rare light is what the chains are for.
-// The cells are chosen from the burn-in's first half. Where some go to the
-// OMC part, that half's parts are dropped (src/render/mlt_burn_in.hpp): the
-// image and b use only samples drawn after the choice, so it biases
-// neither. Where none do, nothing changed, and every round counts.
+// The cells are chosen by burn-in rounds of their own, before the usual
+// ones (burn_in_rounds). Where some go to the OMC part, those rounds' parts
+// are dropped (src/render/mlt_burn_in.hpp): the image and b use only
+// samples drawn after the choice, so it biases neither. Where none do,
+// nothing changed, and every round counts.
 #pragma once
 #include "render/burn_in.hpp"
 #include "shared_types.h"

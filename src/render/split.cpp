@@ -65,6 +65,8 @@ OmcRates omc_samples_per_step(const SplitCosts& c, double effort) {
         cells *= scale;
     }
     film = std::max(film, kOmcMinTimeRatio);
+    const double share = c.cell_pixels / c.pixels; // of the film, and at least of the time
+    if (cells > 0 && share < 1) cells = std::max(cells, share / (1 - share) * (1 + film));
     const double per_time = c.threads * c.mutation_rays * effort;
     OmcRates r;
     r.film = film * per_time / (film_pixels * c.omc_rays);
