@@ -6,7 +6,8 @@
 # (bench/seed_mse.py), with their ratios to PT's.
 # Writes bench/results/omc_cells/. Usage: bench/omc_cells.sh [BIN]
 # Settings (environment): SCENES, SIZE (an N x N film), SECONDS, SEEDS,
-# METHODS (pt, off: --omc-cells off, on: the defaults, onE: --omc-effort E).
+# METHODS (pt, off: --omc-cells off, on: --omc-cells on, onE: that and
+# --omc-effort E).
 set -eu
 BIN=${1:-build/smallmlt}
 SCENES=${SCENES:-ajar cornell-glass cornell-water}
@@ -21,8 +22,8 @@ flags() {
     case $1 in
     pt) echo "--method pt" ;;
     off) echo "--method mlt --omc-cells off" ;;
-    on) echo "--method mlt" ;;
-    on*) echo "--method mlt --omc-effort ${1#on}" ;;
+    on) echo "--method mlt --omc-cells on" ;;
+    on*) echo "--method mlt --omc-cells on --omc-effort ${1#on}" ;;
     *) echo "omc_cells.sh: unknown method $1" >&2; exit 2 ;;
     esac
 }

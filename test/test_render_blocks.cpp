@@ -37,8 +37,9 @@ struct RenderCase {
     std::uint32_t pt_spp; // PT reference: pt_spp samples per pixel in pt_batches
     int pt_batches;       // batches, seed pt_seed
     std::uint64_t pt_seed;
-    Split split = Split::None; // with a split, the image is both parts
-    std::uint32_t strata = 0;  // stratified MLT's tile side (0: none)
+    Split split = Split::None;         // with a split, the image is both parts
+    std::uint32_t strata = 0;          // stratified MLT's tile side (0: none)
+    bool omc_cells = kDefaultOmcCells; // --omc-cells
 };
 
 // What gtest prints for a failing case.
@@ -140,6 +141,7 @@ TEST_P(RenderBlocks, MltMatchesPathTracingPerBlock) {
         opt.seed = c.seed + seed_offset() + 1 + r;
         opt.split = c.split;
         opt.strata = c.strata;
+        opt.omc_cells = c.omc_cells;
         opt.omc_effort = 0.05; // the rule's share would make the OMC part most of the time
         MltRenderer m(test::cl(), ds, opt);
         m.prepare();
@@ -156,7 +158,7 @@ TEST_P(RenderBlocks, MltMatchesPathTracingPerBlock) {
             errors[k] += image_mse_excluding(m.image(), pt.image, pt.lights);
         }
         Image img = m.image();
-        if (r == 0 && c.split != Split::None)
+        if (r == 0 && c.omc_cells && c.split != Split::None)
             std::printf("%s: %u of %u cells to the OMC part whole\n", c.scene, m.report().omc_cells,
                         m.report().target_cells);
         double chains = m.part_image(MltRenderer::Part::Mlt).mean_luminance();
@@ -248,12 +250,17 @@ INSTANTIATE_TEST_SUITE_P(
         RenderCase{"ajar", 32, 16, 4096, 1, 48, 8, 4000, 1536, 32, 400, Split::Direct},
         RenderCase{"cornell-glossy", 32, 16, 4096, 1, 128, 8, 6000, 1536, 32, 600},
         RenderCase{"veach-mis", 32, 16, 4096, 1, 128, 8, 7000, 1536, 32, 700, Split::Visible},
+        RenderCase{"veach-mis", 32, 16, 4096, 1, 128, 8, 9000, 1536, 32, 700, Split::Visible, 0,
+                   !kDefaultOmcCells},
         RenderCase{"cornell-water", 32, 8, 4096, 1, 48, 8, 8000, 1536, 32, 300, Split::None, 8}),
     [](const ::testing::TestParamInfo<RenderCase>& info) {
-        std::string name = std::string(info.param.scene) + "_K" +
-                           std::to_string(info.param.proposals) + "_" +
-                           split_name(info.param.split) +
-                           (info.param.strata ? "_strata" + std::to_string(info.param.strata) : "");
+        std::string name =
+            std::string(info.param.scene) + "_K" + std::to_string(info.param.proposals) + "_" +
+            split_name(info.param.split) +
+            (info.param.strata ? "_strata" + std::to_string(info.param.strata) : "") +
+            (info.param.omc_cells == kDefaultOmcCells ? ""
+             : info.param.omc_cells                   ? "_omc_cells"
+                                                      : "_no_omc_cells");
         std::replace(name.begin(), name.end(), '-', '_');
         return name;
     });

@@ -25,8 +25,8 @@
 
 namespace smallmlt {
 
-// Chosen by the error-against-time bench (doc/RESULTS.md, "Cells for the
-// OMC part").
+// On: wins on ajar and veach-mis, a loss on cornell-glossy, no change
+// elsewhere (doc/RESULTS.md, "Cells for the OMC part").
 constexpr bool kDefaultOmcCells = true;
 
 // Throws UsageError naming `flag` unless `name` is on or off.
