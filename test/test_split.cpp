@@ -289,6 +289,14 @@ TEST(Split, RuleGivesTheCellsTheirOwnShare) {
     EXPECT_NEAR(t_o, kOmcMaxTimeRatio / 3, 1e-12);
     EXPECT_NEAR(t_c, 2 * kOmcMaxTimeRatio / 3, 1e-12);
 
+    // Each part below the cap, together above it (0.6 + 0.6): scaled to it.
+    SplitCosts both = c;
+    both.omc_variance = 0.36 * cm / (film_pixels * c.omc_rays);
+    both.cell_variance = 0.36 * cm / (kPixelStratification * c.cell_pixels * c.cell_rays);
+    const OmcRates half = omc_samples_per_step(both, 1);
+    EXPECT_NEAR(half.film * film_pixels * c.omc_rays / per_time, kOmcMaxTimeRatio / 2, 1e-9);
+    EXPECT_NEAR(half.cells * c.cell_pixels * c.cell_rays / per_time, kOmcMaxTimeRatio / 2, 1e-9);
+
     // No cells: the rule of one OMC part, every pixel alike.
     SplitCosts none = c;
     none.cell_pixels = 0;

@@ -24,7 +24,8 @@
  * film's. */
 
 /* The target's weights, w >= 1 per cell of TargetCells (0 in the cells
- * the OMC part renders whole), and what a splat weighs. */
+ * the OMC part renders whole, where G = 0 and film_value drops the splat),
+ * and what a splat weighs. */
 typedef struct {
     __global const float* weight;
     TargetCells cells;
@@ -70,13 +71,6 @@ inline float mlt_kelemen(const MltTarget* t, float i) {
 /* w at a pixel. */
 inline float mlt_weight(const MltTarget* t, uint pixel) {
     return target_weight(t->weight, &t->cells, t->width, pixel);
-}
-
-/* What a splat of G at target value i in a cell of weight w weighs per unit
- * of its expected-value weight: Kelemen's share over w; 0 where w = 0 (a
- * cell the OMC part renders whole, where G = 0). */
-inline float mlt_splat_scale(const MltTarget* t, float i, float w) {
-    return w > 0.0f ? mlt_kelemen(t, i) / w : 0.0f;
 }
 
 /* A path in a cell the OMC part renders whole (w = 0): its MLT part joins
@@ -180,7 +174,7 @@ inline float mlt_try_proposal(const SceneView* sc, const Frame* frame, SampleSou
     *y = mlt_evaluate(sc, frame, src, target, nonfinite, &wy);
     float iy = path_luminance(y->f);
     float a = ix > 0.0f ? fmin(1.0f, iy / ix) : 1.0f;
-    float w = mlt_splat_scale(target, iy, wy);
+    float w = mlt_kelemen(target, iy) / wy;
     *atomics +=
         film_splat(film, y->pixel, FILM_LAYER_CHAINS, y->f, a * w, key, MLT_DIM_ROUND_Y, false);
     if (large && target->kelemen_pb > 0.0f)
@@ -214,7 +208,7 @@ inline uint mlt_splat_state(const Frame* frame, const MltTarget* target, const F
                             float w, const Film* film, ulong key, uint dim, bool undo) {
     uint pixel = mlt_state_pixel(frame, tile, state, chain, chains);
     float3 g = chain_g(x);
-    w *= mlt_splat_scale(target, path_luminance(g), mlt_weight(target, pixel));
+    w *= mlt_kelemen(target, path_luminance(g)) / mlt_weight(target, pixel);
     return film_splat(film, pixel, FILM_LAYER_CHAINS, g, w, key, dim, undo);
 }
 
