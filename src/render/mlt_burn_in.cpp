@@ -94,9 +94,7 @@ void MltBurnIn::run(RankGroup& ranks, const MemoryPlan& plan, const SceneBuffers
     // many rounds as without them give b and the starts (on veach-mis, half
     // as many tripled the error).
     const bool two_stage = opt_.target == Target::TwoStage, omc = omc_cells_in_force(opt_);
-    const std::uint32_t first = omc         ? iters - std::max(1u, opt_.burn_in_iters)
-                                : two_stage ? iters / 2
-                                            : 0;
+    const std::uint32_t first = omc ? omc_cell_rounds(opt_) : two_stage ? iters / 2 : 0;
     const Round r(cl_, plan, scene, target, film, chains, grid, parts);
     const std::uint32_t tiles = grid.count();
     std::optional<StartPicks> picks;

@@ -122,11 +122,15 @@ inline bool omc_cells_in_force(const MltOptions& opt) {
            opt.burn_in_iters >= 2;
 }
 
-// The burn-in's rounds: --burn-in-iters, and with the OMC part's cells
-// half as many more before them, which choose the cells (MltBurnIn::run).
+// The burn-in's rounds that choose the OMC part's cells, before the usual
+// ones (MltBurnIn::run): half as many as --burn-in-iters, or none.
+inline std::uint32_t omc_cell_rounds(const MltOptions& opt) {
+    return omc_cells_in_force(opt) ? opt.burn_in_iters / 2 : 0;
+}
+
+// The burn-in's rounds: --burn-in-iters and the cells' before them.
 inline std::uint32_t burn_in_rounds(const MltOptions& opt) {
-    const std::uint32_t iters = opt.burn_in_iters > 1 ? opt.burn_in_iters : 1;
-    return omc_cells_in_force(opt) ? iters + iters / 2 : iters;
+    return (opt.burn_in_iters > 1 ? opt.burn_in_iters : 1) + omc_cell_rounds(opt);
 }
 
 // What the memory plan needs to know of a render of `opt` (one definition

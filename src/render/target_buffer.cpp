@@ -46,11 +46,10 @@ void TargetBuffer::fix(RankGroup& ranks, std::uint32_t width, std::uint32_t heig
     const std::uint32_t n = target_cell_count(cells_, height);
     std::vector<float> w =
         two_stage ? target_weights(cells_, width, height, all.rest) : std::vector<float>(n, 1.0f);
-    whole_.assign(omc ? n : 0, false);
+    whole_ = omc ? smallmlt::omc_cells(cells_, width, height, all) : std::vector<bool>();
     omc_cells_ = 0;
     omc_pixels_ = 0;
     if (omc) {
-        whole_ = smallmlt::omc_cells(cells_, width, height, all);
         for (std::uint32_t c = 0; c < n; ++c)
             if (whole_[c]) {
                 w[c] = 0.0f;
