@@ -6,6 +6,8 @@
 #include "base/error.hpp"
 #include "render/mlt.hpp"
 #include "render/omc_cells.hpp"
+#include "render/omc_part_tracer.hpp"
+#include "render/target_buffer.hpp"
 #include "test_support.hpp"
 
 #include <gtest/gtest.h>
@@ -83,6 +85,24 @@ TEST(OmcCells, CellsWherePathTracingRendersTheChainsPartWell) {
         two_cells({1.0, 1.0}, {1.0, 1.0}, below / (1 - below), above / (1 - above)));
     EXPECT_TRUE(c[0]) << "little light behind glass";
     EXPECT_FALSE(c[1]) << "light behind glass";
+}
+
+// The cells the OMC part takes share one rate of samples per pixel, so a
+// cell that goes alone (r_c < R) may not go beside another: with R = 4, a
+// cell of r_c = 3 goes where it is the only one with light, and stays with
+// the chains beside a smooth one (two cells go only where r_c < R / 2).
+TEST(OmcCells, CellsAreChosenTogether) {
+    ASSERT_EQ(kChainsPayRatio, 4.0);
+    std::vector<bool> c =
+        smallmlt::omc_cells(kTwoCells, 4, 2, two_cells({0.0, 0.0, 0.0}, relative_variance(3)));
+    EXPECT_FALSE(c[0]) << "no light";
+    EXPECT_TRUE(c[1]) << "r = 3 alone";
+    c = smallmlt::omc_cells(kTwoCells, 4, 2, two_cells({1.0, 1.0, 1.0}, relative_variance(3)));
+    EXPECT_TRUE(c[0]) << "smooth";
+    EXPECT_FALSE(c[1]) << "r = 3 beside a cell that goes";
+    c = smallmlt::omc_cells(kTwoCells, 4, 2, two_cells({1.0, 1.0, 1.0}, {0.5, 1.5}));
+    EXPECT_TRUE(c[0]) << "smooth";
+    EXPECT_TRUE(c[1]) << "r = 1/2 beside it";
 }
 
 // r_c is the pixels' own variance, not the spread between them: a cell of
@@ -173,4 +193,50 @@ TEST(OmcCells, AjarSharesItsCellsAndKeepsItsLight) {
     }
     EXPECT_LT(b[1], 0.9 * b[0]) << "b still holds the light of the OMC part's cells";
     EXPECT_NEAR(mean[1], mean[0], 0.03 * mean[0]);
+}
+
+// The OMC part's passes over the film's pixels and over its cells' number
+// their samples apart: a pixel's samples are the same whether or not the
+// other kind's passes ran between its own, so its Sobol points stay
+// consecutive. Cells: the left half of a 16 x 16 cornell, whose hand-made
+// parts have smooth light there and none on the right.
+TEST(OmcCells, FilmAndCellPassesNumberTheirOwnSamples) {
+    const std::uint32_t w = 16, h = 16;
+    DeviceScene ds = prepare_scene(test::scene("cornell", w, h));
+    SceneBuffers scene(test::cl(), ds);
+    BurnInParts parts(w * h);
+    for (std::uint32_t p = 0; p < w * h; ++p) {
+        const double y = p % w < w / 2 ? 1.0 : 0.0;
+        parts.count[p] = 64;
+        for (int c = 0; c < 3; ++c)
+            parts.rest[3 * p + c] = 64 * y;
+        parts.rest_y2[p] = 64 * y * y;
+    }
+    TargetBuffer target(test::cl(), kTargetMaxCells * sizeof(float));
+    SingleRank one;
+    target.fix(one, w, h, parts, false, true);
+    ASSERT_GT(target.omc_pixels(), 0u);
+    ASSERT_LT(target.omc_pixels(), std::uint64_t(w) * h);
+    const OmcPart part{Split::Direct, &scene, {}, &target};
+    auto render = [&](bool interleaved) {
+        OmcPartTracer t(test::cl(), ds, 7, part);
+        for (int i = 0; i < 2; ++i)
+            interleaved ? (t.add_samples(3), t.add_cell_samples(3))
+                        : (i == 0           ? t.add_samples(3),
+                           t.add_samples(3) : (t.add_cell_samples(3), t.add_cell_samples(3)));
+        return t.tally();
+    };
+    const Tally a = render(true), b = render(false);
+    EXPECT_EQ(a.ints, b.ints);
+    std::size_t film = 0, cells = 0, differ = 0;
+    for (std::uint32_t p = 0; p < w * h; ++p) {
+        (target.omc_pixel(p % w, p / w) ? cells : film) += a.reals[3 * p] > 0;
+        for (int c = 0; c < 3; ++c)
+            differ += a.reals[3 * p + c] != b.reals[3 * p + c];
+    }
+    std::printf("%zu film and %zu cell pixels with light, %zu values differ\n", film, cells,
+                differ);
+    EXPECT_GT(film, 0u);
+    EXPECT_GT(cells, 0u);
+    EXPECT_EQ(differ, 0u);
 }

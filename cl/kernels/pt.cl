@@ -15,7 +15,8 @@
  * cell of weight 0 the whole path (src/render/omc_cells.hpp), elsewhere
  * the terms before PATH_SPLIT vertices, from paths that stop after the
  * PATH_SPLIT - 1 bounces those need. A pass takes either the cells'
- * pixels (cells_only) or the others; the rest skip its sample numbers. */
+ * pixels (cells_only) or the others, each part numbering its own samples
+ * (first_sample), so that a pixel's numbers stay consecutive. */
 
 #ifdef PT_OMC_PART
 #define PT_OMC_ARGS , __global const float *weight, const TargetCells cells, const uint cells_only

@@ -3,13 +3,14 @@
 // (cl/core/target_cells.h), the OMC part's per-pixel samples trace the
 // whole path there (cl/kernels/pt.cl), and the chains spend every mutation
 // on the rest of the film. It is the split's rule whether the chains pay
-// (split.hpp, chains_pay) applied to each cell of the target (target.hpp):
-// a cell goes to the OMC part where the MLT part's per-pixel relative
-// variance r_c = V_c / (P_c b_c^2) of its P_c pixels is at most
-// kChainsPayRatio and at most kChainsPayBehindShare of the light its paths
-// aimed at lay behind smooth transmitters. A cell where the paths found no
-// MLT-part light stays with the chains: light there is rare, and finding
-// rare light is what the chains are for.
+// (split.hpp, chains_pay) applied to the cells of the target (target.hpp):
+// alone, a cell would go where the MLT part's per-pixel relative variance
+// r_c = V_c / (P_c b_c^2) of its P_c pixels is below kChainsPayRatio; as
+// the cells that go share one rate of samples, they are chosen together
+// (omc_cells.cpp, choose; doc/design.md). Never chosen: a cell with more
+// than kChainsPayBehindShare of the light its paths aimed at behind smooth
+// transmitters, and one where the paths found no MLT-part light: light
+// there is rare, and finding rare light is what the chains are for.
 // The cells are chosen by burn-in rounds of their own, before the usual
 // ones (burn_in_rounds). Where some go to the OMC part, those rounds' parts
 // are dropped (src/render/mlt_burn_in.hpp): the image and b use only

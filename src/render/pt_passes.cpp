@@ -42,7 +42,8 @@ void PtPasses::launch(std::uint32_t n, const std::function<const ClBuffer&(std::
                       const std::function<void(std::uint64_t, std::uint64_t)>& after,
                       bool cells_only) {
     cl_ulong seed = numbering_.seed;
-    cl_uint first_sample = spp_, count = n;
+    std::uint32_t& taken = cells_only ? cell_spp_ : spp_;
+    cl_uint first_sample = taken, count = n;
     for (std::uint64_t first = 0, b = 0; first < pixels(); first += band_pixels_, ++b) {
         std::uint64_t size = std::min(band_pixels_, pixels() - first);
         auto set = [&](const auto&... omc_target) {
@@ -58,7 +59,7 @@ void PtPasses::launch(std::uint32_t n, const std::function<const ClBuffer&(std::
         after(first, size);
     }
     cl_.finish("kernel pt_render over " + std::to_string(pixels()) + " pixels");
-    spp_ += n;
+    taken += n;
 }
 
 std::uint64_t PtPasses::stat(int which) const {

@@ -49,12 +49,15 @@ class PtPasses {
     // Adds n samples per pixel (numbered spp() .. spp() + n - 1), band by
     // band: band b's pixels go to band(b); after(first, size) runs once its
     // launch is queued (the OMC part reads its scratch band there). With
-    // `cells_only`, only the pixels of the OMC part's cells take them.
+    // `cells_only`, only the pixels of the OMC part's cells take them,
+    // numbered cell_spp() on: each pixel's numbers stay consecutive, so its
+    // Sobol points keep their stratification.
     void add_samples(std::uint32_t n, const std::function<const ClBuffer&(std::uint64_t)>& band,
                      const std::function<void(std::uint64_t, std::uint64_t)>& after,
                      bool cells_only = false);
 
     std::uint32_t spp() const { return spp_; }
+    std::uint32_t cell_spp() const { return cell_spp_; }
     const PtNumbering& numbering() const { return numbering_; }
     std::uint64_t pixels() const { return std::uint64_t(ds_.frame.width) * ds_.frame.height; }
     std::uint64_t band_pixels() const { return band_pixels_; }
@@ -72,7 +75,7 @@ class PtPasses {
     PtNumbering numbering_;
     std::uint64_t band_pixels_;
     const TargetBuffer* omc_target_;
-    std::uint32_t spp_ = 0;
+    std::uint32_t spp_ = 0, cell_spp_ = 0;
     void launch(std::uint32_t n, const std::function<const ClBuffer&(std::uint64_t)>& band,
                 const std::function<void(std::uint64_t, std::uint64_t)>& after, bool cells_only);
     std::uint64_t stat(int which) const; // sum of the rows of stats
