@@ -31,6 +31,9 @@ flags() {
 echo "device: $("$BIN" devices | sed -n '1p'), cores: $(nproc)" | tee "$OUT/machine.txt"
 : > "$OUT/summary.txt"
 for scene in $SCENES; do
+    for m in $METHODS; do # an earlier run's renders of other seeds or films
+        rm -f "$OUT/$scene-$m-"*.pfm "$OUT/$scene-$m-"*.log
+    done
     for seed in $SEEDS; do
         for m in $METHODS; do
             # shellcheck disable=SC2046

@@ -208,9 +208,10 @@ const std::vector<Flag> kMltFlags = {
      [](JobOptions& o, const FlagValue& v) {
          o.mlt.omc_cells = parse_omc_cells(v.flag.name, v.text);
      },
-     "with a split, give the OMC part whole the cells of the film where the first half of "
-     "burn-in shows that path tracing renders the chains' part well; the chains render the "
-     "rest (default {default}; doc/design.md, \"Cells for the OMC part\")",
+     "with a split, give the OMC part whole the cells of the film where burn-in rounds of "
+     "their own (half of --burn-in-iters, before the others) show that path tracing renders "
+     "the chains' part well; the chains render the rest (default {default}; doc/design.md, "
+     "\"Cells for the OMC part\")",
      0, 0, nullptr, [] { return std::string(MltOptions().omc_cells ? "on" : "off"); }},
     {"--target", "luminance|two-stage", Section::Mlt,
      [](JobOptions& o, const FlagValue& v) { o.mlt.target = parse_target(v.flag.name, v.text); },

@@ -26,8 +26,9 @@
 
 namespace smallmlt {
 
-// On: wins on ajar and veach-mis, a loss on cornell-glossy, no change
-// elsewhere (doc/RESULTS.md, "Cells for the OMC part").
+// On: lower MSE on ajar, veach-mis and cornell-glossy, half the block error
+// on the first two but 1.5 times it on cornell-glossy, no change elsewhere
+// (doc/RESULTS.md, "Cells for the OMC part").
 constexpr bool kDefaultOmcCells = true;
 
 // Throws UsageError naming `flag` unless `name` is on or off.
