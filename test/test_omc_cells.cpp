@@ -220,10 +220,17 @@ TEST(OmcCells, FilmAndCellPassesNumberTheirOwnSamples) {
     const OmcPart part{Split::Direct, &scene, {}, &target};
     auto render = [&](bool interleaved) {
         OmcPartTracer t(test::cl(), ds, 7, part);
-        for (int i = 0; i < 2; ++i)
-            interleaved ? (t.add_samples(3), t.add_cell_samples(3))
-                        : (i == 0           ? t.add_samples(3),
-                           t.add_samples(3) : (t.add_cell_samples(3), t.add_cell_samples(3)));
+        if (interleaved) {
+            for (int i = 0; i < 2; ++i) {
+                t.add_samples(3);
+                t.add_cell_samples(3);
+            }
+        } else {
+            t.add_samples(3);
+            t.add_samples(3);
+            t.add_cell_samples(3);
+            t.add_cell_samples(3);
+        }
         return t.tally();
     };
     const Tally a = render(true), b = render(false);
