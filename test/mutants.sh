@@ -5,30 +5,46 @@
 # if none fails, the whole suite (test/run_all.sh), and records whether some
 # test failed. Writes build/mutants/report.md; exits 1 if a bug survived, 2
 # if an entry no longer applies (its `from` text is not found exactly once)
-# or its bug does not compile.
-# Usage: sh test/mutants.sh [NAME...]
+# or its bug does not compile. With --check it builds and runs nothing: it
+# only says whether every entry still applies (test/mutants_test.sh).
+# Usage: sh test/mutants.sh [--check] [NAME...]
+# (MUTANTS_LIST names another list than test/mutants.txt.)
 set -u
 ROOT=$(pwd)
-LIST=$ROOT/test/mutants.txt
+LIST=${MUTANTS_LIST:-$ROOT/test/mutants.txt}
 OUT=$ROOT/build/mutants
 TREE=$OUT/tree
 JOBS=${JOBS:-$(nproc)}
-mkdir -p "$OUT"
-rm -rf "$TREE"
-mkdir -p "$TREE"
-# The project as it is now, committed or not, without build outputs.
-git ls-files -co --exclude-standard -z | tar --null -T - -cf - | tar -xf - -C "$TREE"
-cd "$TREE" || exit 2
-echo "building the unmutated tree"
-make -s -j"$JOBS" all build/smallmlt_tests >"$OUT/build.log" 2>&1 ||
-    { echo "the unmutated tree does not build (build/mutants/build.log)"; exit 2; }
+CHECK=
+[ "${1-}" = --check ] && { CHECK=1; shift; }
+if [ -z "$CHECK" ]; then
+    mkdir -p "$OUT"
+    rm -rf "$TREE"
+    mkdir -p "$TREE"
+    # The project as it is now, committed or not, without build outputs.
+    git ls-files -co --exclude-standard -z | tar --null -T - -cf - | tar -xf - -C "$TREE"
+    cd "$TREE" || exit 2
+    echo "building the unmutated tree"
+    make -s -j"$JOBS" all build/smallmlt_tests >"$OUT/build.log" 2>&1 ||
+        { echo "the unmutated tree does not build (build/mutants/build.log)"; exit 2; }
+fi
 
 REPORT=$OUT/report.md
-printf '| bug | file | result | tests that failed | seconds |\n| --- | --- | --- | --- | --- |\n' >"$REPORT"
+[ -n "$CHECK" ] || printf '| bug | file | result | tests that failed | seconds |\n| --- | --- | --- | --- | --- |\n' >"$REPORT"
 survived=0
 broken=0
 total=0
 start_all=$(date +%s)
+
+# applies NAME FILE FROM: whether FROM occurs exactly once in FILE (else
+# says so)
+applies() {
+    n=0
+    [ -f "$2" ] && n=$(FROM=$3 perl -0ne 'BEGIN { $c = 0 } $c++ while /\Q$ENV{FROM}\E/g; END { print $c }' "$2")
+    [ "$n" = 1 ] && return 0
+    echo "MUTANT $1: '$3' occurs $n times in $2 (must be once)"
+    return 1
+}
 
 # run_one NAME FILE FROM TO FIRST WHAT ENV
 run_one() {
@@ -36,9 +52,7 @@ run_one() {
     total=$((total + 1))
     t0=$(date +%s)
     cp "$ROOT/$file" "$file"
-    n=$(FROM=$from perl -0ne 'BEGIN { $c = 0 } $c++ while /\Q$ENV{FROM}\E/g; END { print $c }' "$file")
-    if [ "$n" != 1 ]; then
-        echo "MUTANT $name: '$from' occurs $n times in $file (must be once)"
+    if ! applies "$name" "$file" "$from"; then
         printf '| %s | %s | does not apply | | |\n' "$what" "$file" >>"$REPORT"
         broken=$((broken + 1))
         return
@@ -78,7 +92,12 @@ wanted() {
 }
 flush() {
     if [ -n "$name" ] && wanted $selected; then
-        run_one "$name" "$file" "$from" "$to" "${first:-*}" "${what:-$name}" "$menv"
+        if [ -n "$CHECK" ]; then
+            total=$((total + 1))
+            applies "$name" "$file" "$from" || broken=$((broken + 1))
+        else
+            run_one "$name" "$file" "$from" "$to" "${first:-*}" "${what:-$name}" "$menv"
+        fi
     fi
     name= file= from= to= first= what= menv=
 }
@@ -99,6 +118,11 @@ while IFS= read -r line || [ -n "$line" ]; do
 done <"$LIST"
 flush
 
+if [ -n "$CHECK" ]; then
+    echo "mutants: $total entries, $broken do not apply"
+    [ "$broken" -gt 0 ] && exit 2
+    exit 0
+fi
 end_all=$(date +%s)
 echo "mutants: $total bugs, $((total - survived - broken)) killed, $survived survived, $broken broken, $((end_all - start_all)) s"
 echo "report: build/mutants/report.md"
