@@ -31,7 +31,7 @@ struct Candidate {
 // the one that adds most, keeping the best set along the way.
 std::vector<std::uint32_t> choose(std::vector<Candidate> open) {
     const double root_r = std::sqrt(kChainsPayRatio);
-    Candidate s{0, 0, 0, 0};
+    double light = 0, pixels = 0, variance = 0; // of S so far
     std::vector<std::uint32_t> order;
     double best = 0;
     std::size_t best_size = 0;
@@ -40,13 +40,13 @@ std::vector<std::uint32_t> choose(std::vector<Candidate> open) {
         double pick_gain = -std::numeric_limits<double>::infinity();
         for (std::size_t i = 0; i < open.size(); ++i) {
             const Candidate& c = open[i];
-            const double g = root_r * (s.light + c.light) -
-                             std::sqrt((s.pixels + c.pixels) * (s.variance + c.variance));
+            const double g = root_r * (light + c.light) -
+                             std::sqrt((pixels + c.pixels) * (variance + c.variance));
             if (i == 0 || g > pick_gain) pick = i, pick_gain = g;
         }
-        s.light += open[pick].light;
-        s.pixels += open[pick].pixels;
-        s.variance += open[pick].variance;
+        light += open[pick].light;
+        pixels += open[pick].pixels;
+        variance += open[pick].variance;
         order.push_back(open[pick].cell);
         open.erase(open.begin() + std::ptrdiff_t(pick));
         if (pick_gain > best) best = pick_gain, best_size = order.size();
