@@ -4,6 +4,7 @@
 #include "known_target.hpp"
 #include "render/mlt.hpp"
 #include "stats.hpp"
+#include "target_cells.h"
 #include "test_support.hpp"
 
 #include <gtest/gtest.h>
@@ -26,10 +27,19 @@ using namespace smallmlt::known_target;
 // bias shared by all pixels: the splat weights); and the 15 lit pixels of
 // image() / b, against truth / b_true (where the chains went, without b's own
 // noise, which is common to all pixels of one render and dominates them).
-// 31 two-sided tests at 1e-3 / 31 each (Bonferroni: 1e-3 for the test). The
+// 31 two-sided tests at 1e-3 / 31 each (Bonferroni: 1e-3 for the test; 2 L
+// + 1 for L lit pixels). The
 // pixel where the target is zero must get exactly nothing.
+//
+// With holes, the cells of 2 x 2 pixels that `holes` marks (bit c: cell c,
+// two cells a row) have weight 0, as the OMC part's cells have: the chains'
+// image there is exactly 0, elsewhere the per-pixel integral, and b the
+// target's mean over the film with the holes left out. The large steps then
+// draw their film numbers on the rest (StratumWeights), at a density b's
+// sum and, with `kelemen`, Kelemen's weights must both take into account.
 struct SplatCase {
-    std::uint32_t proposals, threads, steps, replicas;
+    std::uint32_t proposals, threads, steps, replicas, holes;
+    bool kelemen;
 };
 
 class ChainTargetSplat : public ::testing::TestWithParam<SplatCase> {};
@@ -43,12 +53,21 @@ TEST_P(ChainTargetSplat, ImageMatchesThePerPixelIntegral) {
     // Value i < pixels: pixel i of image(); i = pixels: the image mean;
     // pixels + 1 + j: pixel j of image() / b.
     std::vector<double> sum(values, 0.0), sum2(values, 0.0), truth(values, 0.0);
+    const TargetCells cells{1u, 2u}; // 2 x 2 pixels a cell
+    std::vector<bool> zero_cells(4);
+    for (std::uint32_t c = 0; c < 4; ++c)
+        zero_cells[c] = (sc.holes >> c) & 1u;
     for (int i = 0; i < pixels; ++i) {
-        truth[i] = tg.pixel(i % bins, i / bins, bins);
+        const std::uint32_t x = std::uint32_t(i % bins), y = std::uint32_t(i / bins);
+        truth[i] = zero_cells[target_cell(&cells, x, y)] ? 0.0 : tg.pixel(int(x), int(y), bins);
         truth[pixels] += truth[i] / pixels;
-        truth[pixels + 1 + i] = truth[i] / tg.Z;
     }
-    EXPECT_NEAR(truth[pixels], tg.Z, 1e-12 * tg.Z);
+    const double b_true = truth[pixels]; // the mean of I over the film
+    for (int i = 0; i < pixels; ++i)
+        truth[pixels + 1 + i] = truth[i] / b_true;
+    if (!sc.holes) {
+        EXPECT_NEAR(b_true, tg.Z, 1e-12 * tg.Z);
+    }
     auto t0 = std::chrono::steady_clock::now();
     double acceptance = 0, b_error = 0;
     for (std::uint32_t r = 0; r < replicas; ++r) {
@@ -56,10 +75,15 @@ TEST_P(ChainTargetSplat, ImageMatchesThePerPixelIntegral) {
         MltTestHooks hooks;
         opt.proposals = sc.proposals;
         opt.threads = sc.threads;
-        opt.large_step = 0.05f;
+        opt.large_step = sc.kelemen ? 0.3f : 0.05f;
+        opt.kelemen = sc.kelemen;
         opt.seed = std::uint64_t(env_or("CT_SEED", 11)) * 7919 + 100 * sc.proposals + r;
         opt.burn_in_iters = 32;
         hooks.evaluator = "test/cl/eval_target.cl";
+        if (sc.holes) {
+            hooks.cells = cells;
+            hooks.zero_cells = zero_cells;
+        }
         MltRenderer mlt(test::cl(), ds, opt, hooks);
         mlt.prepare();
         mlt.step(sc.steps);
@@ -79,12 +103,17 @@ TEST_P(ChainTargetSplat, ImageMatchesThePerPixelIntegral) {
         }
     }
     double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    const int tests = 2 * (pixels - 1) + 1;
+    int lit = 0;
+    for (int i = 0; i < pixels; ++i)
+        lit += truth[i] > 0;
+    const int tests = 2 * lit + 1;
     const double alpha = 1e-3 / tests, nu = replicas - 1.0;
     const double t_limit = test::student_two_sided_critical(alpha, nu);
     std::printf(
-        "K %u: %u replicas, %.1f s, acceptance %.1f%%, b +-%.2f%% a render; |t| limit %.2f\n",
-        sc.proposals, replicas, seconds, 100 * acceptance, 100 * b_error, t_limit);
+        "K %u, holes %x%s: %u replicas, %.1f s, acceptance %.1f%%, b +-%.2f%% a render; |t| "
+        "limit %.2f\n",
+        sc.proposals, sc.holes, sc.kelemen ? ", Kelemen's weights" : "", replicas, seconds,
+        100 * acceptance, 100 * b_error, t_limit);
     const bool diag = env_or("CT_DIAG", 0) > 0;
     double worst[3] = {0, 0, 0};
     int worst_at[3] = {-1, -1, -1};
@@ -118,5 +147,7 @@ TEST_P(ChainTargetSplat, ImageMatchesThePerPixelIntegral) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Proposals, ChainTargetSplat,
-                         ::testing::Values(SplatCase{1, 2048, 150, 16},
-                                           SplatCase{4, 2048, 150, 16}));
+                         ::testing::Values(SplatCase{1, 2048, 150, 16, 0u, false},
+                                           SplatCase{4, 2048, 150, 16, 0u, false},
+                                           SplatCase{1, 2048, 150, 16, 0b1110u, false},
+                                           SplatCase{1, 2048, 150, 16, 0b1110u, true}));

@@ -284,6 +284,22 @@ typedef struct {
     f32 sy;
 } FilmTile;
 
+/* What a stratum's large steps weigh (cl/mlt/mlt_step.cl). A large step
+ * draws its film numbers uniformly on the stratum's pixels where the
+ * target's weight is above 0 (the chains' part), by up to
+ * MLT_LARGE_FILM_TRIES uniform draws on the whole tile; where all miss it
+ * keeps the last, where the target is 0. On the chains' part, a share A of
+ * the tile's pixels, its density against the uniform one is then
+ * large_density = (1 - (1 - A)^tries) / A (1 where A = 1 or A = 0).
+ * kelemen_pb is p b0 large_density, the large steps' density in the balance
+ * heuristic of Kelemen's weights (0: expected values alone); a large step
+ * adds I(y) / large_density to b's sum. 8 bytes. */
+typedef struct {
+    f32 kelemen_pb;
+    f32 large_density;
+} StratumWeights;
+#define MLT_LARGE_FILM_TRIES 16u
+
 /* The layout of every struct above, one list: S(struct, size in bytes)
  * and, for each field past the first, F(struct, field, offset in bytes).
  * The host static_asserts it (src/scene/shared_layout.cpp), and the host and
@@ -314,7 +330,8 @@ typedef struct {
         F(BurnInFilm, step, 12) F(BurnInFilm, per_round, 16)                                       \
     S(LatePixels, 12) F(LatePixels, inverse, 4) F(LatePixels, count, 8)                            \
     S(FilmTile, 32) F(FilmTile, y0, 4) F(FilmTile, w, 8) F(FilmTile, h, 12) F(FilmTile, ox, 16)   \
-        F(FilmTile, oy, 20) F(FilmTile, sx, 24) F(FilmTile, sy, 28)
+        F(FilmTile, oy, 20) F(FilmTile, sx, 24) F(FilmTile, sy, 28)                                \
+    S(StratumWeights, 8) F(StratumWeights, large_density, 4)
 /* clang-format on */
 
 #define FILM_MAX_BANDS 4

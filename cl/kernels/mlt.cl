@@ -68,7 +68,8 @@ __kernel void mlt_init(SCENE_ARGS, __global const float* weight, const TargetCel
 /* One Metropolis step of every chain with K proposals each (split-transition
  * MLT; K = 1 is plain PSSMLT). Work-item t is proposal t % K of chain t / K;
  * a chain's K work-items sit in one work-group (K divides MLT_GROUP):
- * 1. each evaluates its proposal y_i and splats a_i F(y_i)/I(y_i) (with
+ * 1. each evaluates its proposal y_i (a large one with its film numbers
+ *    where the target is above 0, mlt_large_film) and splats a_i F(y_i)/I(y_i) (with
  *    Kelemen's weights, mlt_step.cl, a_i F(y_i)/(I(y_i) + p b0), and a large
  *    proposal's own F(y_i)/(I(y_i) + p b0) in the film's large-steps layer);
  * 2. they meet in local memory; the first picks the next state among
@@ -76,8 +77,8 @@ __kernel void mlt_init(SCENE_ARGS, __global const float* weight, const TargetCel
  *    stay weight K - sum a_i to x's gathered weight, splats that at x's
  *    pixel if the chain moves away, and counts a run of rejections
  *    (doc/stability.md);
- * 3. the group's counters, with the luminance of its large steps (each an
- *    OMC sample of b's integrand), go to its row of stats; the picked
+ * 3. the group's counters, with its large steps' samples of b (I over
+ *    their density), go to its row of stats; the picked
  *    work-item commits its proposal. */
 __kernel void mlt_step(SCENE_ARGS, __global const float* weight, const TargetCells cells,
                        STRATA_ARGS, __global uint* state, __global ChainValue* values,
@@ -92,13 +93,14 @@ __kernel void mlt_step(SCENE_ARGS, __global const float* weight, const TargetCel
     uint c = th.active ? th.chain : 0u;
     SceneView sc = SCENE_VIEW();
     MltStratum stratum = MLT_STRATUM(c);
-    MltTarget target = mlt_target(weight, cells, &frame, stratum.kelemen_pb);
+    MltTarget target = mlt_target(weight, cells, &frame, stratum.weights.kelemen_pb);
     Film film = FILM_VIEW();
     ChainValue x = values[c];
     ulong key = rng_key(seed, th.t, iteration);
     bool large = mlt_is_large(key, large_threshold);
     SampleSource src = smp_chain(state, c, th.chains, key, large ? SMP_LARGE : SMP_SMALL,
                                  chain_bounces(x), stratum.tile);
+    if (large) src.film = mlt_large_film(&target, &stratum.tile, &frame, key);
     EvalResult y = eval_nothing();
     float a = 0.0f;
     uint atomics = 0u, nonfinite = 0u;
@@ -120,7 +122,8 @@ __kernel void mlt_step(SCENE_ARGS, __global const float* weight, const TargetCel
         else
             atomic_inc(&l_count[MLT_STAT_ACCEPTED]);
     }
-    mlt_count(l_count, l_large_lum, th.active && large, y, nonfinite, atomics);
+    mlt_count(l_count, l_large_lum, th.active && large, y, stratum.weights.large_density, nonfinite,
+              atomics);
     barrier(CLK_LOCAL_MEM_FENCE);
     mlt_publish(stats, l_count, get_local_id(0) == 0u ? mlt_large_lum(l_large_lum) : 0ul);
 
@@ -145,7 +148,7 @@ __kernel void mlt_owed(const Frame frame, __global const float* weight, const Ta
     if (c >= num_chains) return;
     Film film = FILM_VIEW();
     MltStratum stratum = MLT_STRATUM(c);
-    MltTarget target = mlt_target(weight, cells, &frame, stratum.kelemen_pb);
+    MltTarget target = mlt_target(weight, cells, &frame, stratum.weights.kelemen_pb);
     ChainValue x = values[c];
     if (!x.stay) return;
     mlt_splat_state(&frame, &target, &stratum.tile, state, c, num_chains, x,

@@ -9,7 +9,8 @@
  * x adds its stay weight * F(x)/I(x) at x's, with a = min(1, I(y)/I(x)), so
  * every splat has luminance equal to its weight over w <= its weight. With
  * Kelemen's weights (Kelemen et al. 2002, section 5; MltTarget.kelemen_pb =
- * p b0 > 0), a large proposal is also an independent sample of the image,
+ * p q b0 > 0, q the large steps' density, StratumWeights; p b0 below stands
+ * for it), a large proposal is also an independent sample of the image,
  * and the two estimates are combined by the balance heuristic: every splat's
  * 1/I becomes 1/(I + p b0), and a large proposal also splats its own
  * estimate, weight 1, in the film's large-steps layer, which the image
@@ -30,7 +31,7 @@ typedef struct {
     __global const float* weight;
     TargetCells cells;
     uint width;       /* the film's, in pixels */
-    float kelemen_pb; /* p b0 with Kelemen's weights; 0: expected values alone */
+    float kelemen_pb; /* p q b0 with Kelemen's weights; 0: expected values alone */
 } MltTarget;
 
 inline MltTarget mlt_target(__global const float* weight, TargetCells cells, const Frame* frame,
@@ -41,26 +42,28 @@ inline MltTarget mlt_target(__global const float* weight, TargetCells cells, con
 
 /* Stratified MLT (src/render/strata.hpp): the chains of work-group g (of
  * MLT_GROUP threads, strata_group_chains chains) live in tile
- * strata_group_tile[g] of strata_tiles, where Kelemen's weights take
- * p b0 = strata_pb[tile], b0 the tile's own normalization. One tile, the
- * whole film, is plain MLT. */
+ * strata_group_tile[g] of strata_tiles, whose large steps weigh
+ * strata_weights[tile] (StratumWeights: Kelemen's p b0, b0 the tile's own
+ * normalization, and the large steps' density). One tile, the whole film,
+ * is plain MLT. */
 #define STRATA_ARGS                                                                                \
     __global const FilmTile *strata_tiles, __global const uint *strata_group_tile,                 \
-        __global const float *strata_pb, const uint strata_group_chains
+        __global const StratumWeights *strata_weights, const uint strata_group_chains
 
 typedef struct {
     FilmTile tile;
-    float kelemen_pb;
+    StratumWeights weights;
 } MltStratum;
 
 inline MltStratum mlt_stratum(__global const FilmTile* tiles, __global const uint* group_tile,
-                              __global const float* pb, uint group_chains, uint chain) {
+                              __global const StratumWeights* weights, uint group_chains,
+                              uint chain) {
     uint t = group_tile[chain / group_chains];
-    MltStratum s = {tiles[t], pb[t]};
+    MltStratum s = {tiles[t], weights[t]};
     return s;
 }
 #define MLT_STRATUM(chain)                                                                         \
-    mlt_stratum(strata_tiles, strata_group_tile, strata_pb, strata_group_chains, (chain))
+    mlt_stratum(strata_tiles, strata_group_tile, strata_weights, strata_group_chains, (chain))
 
 /* What a splat at target value i keeps of its expected-value weight:
  * i / (i + p b0) with Kelemen's weights, else 1. */
@@ -71,6 +74,30 @@ inline float mlt_kelemen(const MltTarget* t, float i) {
 /* w at a pixel. */
 inline float mlt_weight(const MltTarget* t, uint pixel) {
     return target_weight(t->weight, &t->cells, t->width, pixel);
+}
+
+/* Stream numbers of a large step's film numbers after its first try, which
+ * takes the film's own (dims 0 and 1): try t takes MLT_DIM_LARGE_FILM + 2 t
+ * and the next. Below MLT_DIM_LARGE, above every path number. */
+#define MLT_DIM_LARGE_FILM 0xFFFFFF00u
+
+/* A large step's film numbers (LAYOUT_CAMERA_BITS wide) in tile `tile`:
+ * the first of MLT_LARGE_FILM_TRIES uniform draws that lands where w > 0,
+ * else the last (StratumWeights). The chains' states never lie where
+ * w = 0, so draws there are wasted steps; on the chains' part the draw is
+ * uniform, with the density StratumWeights.large_density. */
+inline uint2 mlt_large_film(const MltTarget* t, const FilmTile* tile, const Frame* frame,
+                            ulong key) {
+    const uint shift = 32u - LAYOUT_CAMERA_BITS;
+    uint2 film = (uint2)(rng_u32(key, 0u), rng_u32(key, 1u)) >> shift;
+    for (uint i = 1u; i < MLT_LARGE_FILM_TRIES; ++i) {
+        FilmPoint p = strata_point(tile, frame, layout_unit(film.x, LAYOUT_CAMERA_BITS),
+                                   layout_unit(film.y, LAYOUT_CAMERA_BITS));
+        if (mlt_weight(t, p.pixel) > 0.0f) break;
+        uint dim = MLT_DIM_LARGE_FILM + 2u * i;
+        film = (uint2)(rng_u32(key, dim), rng_u32(key, dim + 1u)) >> shift;
+    }
+    return film;
 }
 
 /* A path in a cell the OMC part renders whole (w = 0): its MLT part joins
@@ -274,12 +301,13 @@ inline void mlt_publish_nonfinite(__global ulong* stats, __local uint* count, ui
 
 /* A work-item's share of the group's counters: rays, large steps,
  * non-finite results, global atomics; and in large_lum[lid] its large
- * step's luminance (0 if small), which the group sums in a fixed order. */
+ * step's estimate of b, I(y) over the large steps' density (0 if small),
+ * which the group sums in a fixed order. */
 inline void mlt_count(__local uint* count, __local ulong* large_lum, bool large, EvalResult y,
-                      uint nonfinite, uint atomics) {
+                      float large_density, uint nonfinite, uint atomics) {
     atomic_add(&count[MLT_STAT_RAYS], y.rays);
     if (large) atomic_inc(&count[MLT_STAT_LARGE]);
-    large_lum[get_local_id(0)] = large ? fixed_b_sample(path_luminance(y.f)) : 0ul;
+    large_lum[get_local_id(0)] = large ? fixed_b_sample(path_luminance(y.f) / large_density) : 0ul;
     if (nonfinite) atomic_add(&count[MLT_STAT_NONFINITE], nonfinite);
     if (atomics) atomic_add(&count[MLT_STAT_ATOMICS], atomics);
 }

@@ -13,7 +13,7 @@
 
 #define SMP_REPLAY 0u /* y = x: evaluate the stored state */
 #define SMP_SMALL 1u  /* perturb every live number */
-#define SMP_LARGE 2u  /* draw every number afresh: the OMC path of `key` */
+#define SMP_LARGE 2u  /* draw every number afresh: the film numbers `film`, the rest of `key` */
 #define SMP_START 3u  /* a burn-in sample: Sobol numbers, the film position `film` */
 
 typedef struct {
@@ -24,7 +24,7 @@ typedef struct {
     uint index;  /* SMP_START: the sample's index in the pixel's sequence */
     uint mode;
     uint alive;    /* live bounces of x */
-    uint2 film;    /* SMP_START: the film numbers (LAYOUT_CAMERA_BITS wide) */
+    uint2 film;    /* SMP_START, SMP_LARGE: the film numbers (LAYOUT_CAMERA_BITS wide) */
     FilmTile tile; /* the chain's stratum (strata.cl): its film numbers are the tile's */
 } SampleSource;
 
@@ -125,9 +125,8 @@ inline uint smp_perturb_bits(uint v, uint r, uint bits, uint stretch) {
  * integer below 2^bits: the path reads it (smp_propose) and a commit stores
  * it, one value computed the same way both times. */
 inline uint smp_propose_bits(const SampleSource* s, uint bounce, LayoutSlot at) {
-    if (s->mode == SMP_START)
-        return at.dim < LAYOUT_CAMERA_DIMS ? (at.dim ? s->film.y : s->film.x)
-                                           : smp_start_u32(s, bounce, at) >> (32u - at.bits);
+    if (s->mode >= SMP_LARGE && at.dim < LAYOUT_CAMERA_DIMS) return at.dim ? s->film.y : s->film.x;
+    if (s->mode == SMP_START) return smp_start_u32(s, bounce, at) >> (32u - at.bits);
     uint r = rng_u32(s->key, at.dim);
     bool live = at.dim < LAYOUT_CAMERA_DIMS || bounce < s->alive;
     if (s->mode >= SMP_LARGE || !live) return r >> (32u - at.bits);
@@ -157,10 +156,10 @@ inline float smp_perturb(float x, uint r, uint stretch) {
 }
 
 inline float smp_propose(const SampleSource* s, uint bounce, LayoutSlot at) {
+    if (s->mode >= SMP_LARGE && at.dim < LAYOUT_CAMERA_DIMS)
+        return layout_unit(at.dim ? s->film.y : s->film.x, LAYOUT_CAMERA_BITS);
     if (s->mode == SMP_START)
-        return at.dim < LAYOUT_CAMERA_DIMS
-                   ? layout_unit(at.dim ? s->film.y : s->film.x, LAYOUT_CAMERA_BITS)
-                   : (float)(smp_start_u32(s, bounce, at) >> 8) * (1.0f / 16777216.0f);
+        return (float)(smp_start_u32(s, bounce, at) >> 8) * (1.0f / 16777216.0f);
     uint r = rng_u32(s->key, at.dim);
     bool live = at.dim < LAYOUT_CAMERA_DIMS || bounce < s->alive;
     if (s->mode >= SMP_LARGE || !live) return (float)(r >> 8) * (1.0f / 16777216.0f);

@@ -156,7 +156,7 @@ MemoryPlan plan_mlt(const DeviceScene& ds, const ChainShape& shape, std::uint64_
     // the group's tile.
     const std::uint64_t groups = group_rows(threads), tiles = shape.strata ? groups : 1;
     add(p, Buffer::StrataTiles, tiles * sizeof(FilmTile));
-    add(p, Buffer::StrataWeights, tiles * sizeof(float));
+    add(p, Buffer::StrataWeights, tiles * sizeof(StratumWeights));
     add(p, Buffer::GroupTiles, groups * sizeof(std::uint32_t));
     // A burn-in round's luminances, read back for the picks.
     add(p, Buffer::Luminance, threads * sizeof(float));

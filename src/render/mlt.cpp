@@ -110,6 +110,9 @@ MltRenderer::MltRenderer(const ClContext& cl, const DeviceScene& ds, const MltOp
 }
 
 void MltRenderer::sample_starts(RankGroup& ranks) {
+    if (!hooks_.zero_cells.empty())
+        target_.set(hooks_.cells, ds_.frame.width, ds_.frame.height,
+                    std::vector<float>(hooks_.zero_cells.size(), 1.0f), hooks_.zero_cells);
     burn_in_.run(ranks, plan_, scene_, target_, burn_in_film_,
                  MltBurnIn::Chains{state_, stats_, picks_, chains()}, grid_, strata_);
 }
@@ -135,18 +138,30 @@ double MltRenderer::b_rel_error() const {
     return b_estimate(stats()).rel_error;
 }
 
-void MltRenderer::prepare(RankGroup& ranks) {
-    Clock::time_point t0 = Clock::now();
-    sample_starts(ranks);
+void MltRenderer::set_stratum_weights(RankGroup& ranks) {
+    std::vector<StratumWeights> w(grid_.count());
+    std::vector<double> density(grid_.count());
+    for (std::uint32_t t = 0; t < grid_.count(); ++t) {
+        density[t] = strata_large_density(target_.chains_share(grid_.tiles[t]));
+        w[t] = StratumWeights{0.0f, float(density[t])};
+    }
     if (kelemen_in_force(opt_)) {
         const double p = std::clamp(double(large_step_of(opt_)), 0.0, 1.0);
         const std::vector<double> b0 = burn_in_.ranks_b(ranks, grid_);
         for (std::uint32_t t = 0; t < grid_.count(); ++t) {
-            kelemen_pb_[t] = float(p * b0[t] * hooks_.b0_scale);
-            kelemen_b0_[t] = double(kelemen_pb_[t]) / p; // as the weights have it
+            kelemen_pb_[t] = float(p * density[t] * b0[t] * hooks_.b0_scale);
+            // the large steps' layer by the b0 of the weights, as they have it
+            kelemen_b0_[t] = double(kelemen_pb_[t]) / (p * density[t]);
+            w[t].kelemen_pb = kelemen_pb_[t];
         }
-        strata_.set_kelemen_pb(kelemen_pb_);
     }
+    strata_.set_weights(w);
+}
+
+void MltRenderer::prepare(RankGroup& ranks) {
+    Clock::time_point t0 = Clock::now();
+    sample_starts(ranks);
+    set_stratum_weights(ranks);
     if (split_ == Split::Auto) {
         bool pay = ranks.all(chains_pay(mlt_relative_variance(), behind_specular_share()));
         split_ = pay ? kChainsSplit : Split::All;

@@ -70,7 +70,8 @@ class MltRenderer : public Integrator {
         sample_starts(one);
     }
     // b, the mean luminance I of the OMC samples drawn so far: the burn-in's
-    // and every large step's (each an OMC sample of I), so b keeps converging
+    // and every large step's (each an OMC sample of I, weighed by its
+    // density, StratumWeights), so b keeps converging
     // as the render goes on; and its relative standard error, from the
     // burn-in's per-sample variance over all of them.
     double b() const;
@@ -136,6 +137,9 @@ class MltRenderer : public Integrator {
   private:
     // The pick's paths lie on `film`.
     void init_chains(const BurnInFilm& film);
+    // What each tile's large steps weigh, once the target is fixed: their
+    // density on its chains' part and, with Kelemen's weights, p b0.
+    void set_stratum_weights(RankGroup& ranks);
     // --restart, once the chains have splatted what they owe: every chain
     // starts again at a pick of fresh burn-in rounds.
     void restart_chains();

@@ -41,6 +41,11 @@ struct MltTestHooks {
     // (2D, or with bounces on a layout that has bounce slots).
     std::string evaluator = "cl/path/eval_path.cl";
     std::vector<std::string> extra_files; // appended to the program (test probes)
+    // A target of weight 0 in the cells of `cells` that `zero_cells` marks,
+    // from the start, as if the OMC part rendered them whole: the known
+    // target with holes (empty: none).
+    TargetCells cells = target_one_cell();
+    std::vector<bool> zero_cells;
 };
 
 // An MLT render's options. The defaults are the command line's: `render`
@@ -143,7 +148,9 @@ inline ChainShape mlt_chain_shape(const MltOptions& opt, const MltTestHooks& hoo
     s.film_atomics64 = opt.film_atomics64;
     s.omc_part = opt.split != Split::None;
     s.target_cells =
-        opt.target == Target::TwoStage || omc_cells_in_force(opt) ? kTargetMaxCells : 1;
+        opt.target == Target::TwoStage || omc_cells_in_force(opt) || !hooks.zero_cells.empty()
+            ? kTargetMaxCells
+            : 1;
     s.film_layers = kelemen_in_force(opt) ? 2 : 1;
     s.strata = opt.strata != 0;
     return s;

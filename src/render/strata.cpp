@@ -1,5 +1,7 @@
 #include "render/strata.hpp"
 
+#include <cmath>
+
 #include "base/error.hpp"
 
 #include <algorithm>
@@ -19,6 +21,11 @@ std::uint32_t tiles_along(std::uint32_t pixels, std::uint32_t side) {
 double StrataGrid::area(std::uint32_t tile, std::uint64_t pixels) const {
     const FilmTile& t = tiles[tile];
     return double(t.w) * double(t.h) / double(pixels);
+}
+
+double strata_large_density(double share) {
+    if (!(share > 0) || share >= 1) return 1;
+    return (1 - std::pow(1 - share, double(MLT_LARGE_FILM_TRIES))) / share;
 }
 
 std::uint32_t strata_count(std::uint32_t width, std::uint32_t height, std::uint32_t side) {

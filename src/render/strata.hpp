@@ -5,7 +5,8 @@
 // (2020); here in the simple form that the burn-in permits: tile s's image
 // is B_s times its chains' histogram, where B_s is the mean of I over the
 // tile, estimated by the burn-in's OMC samples that land in it and by its
-// chains' large steps (each uniform in the tile). Each tile's brightness is
+// chains' large steps (each uniform on the tile's pixels where the target
+// is above 0, StratumWeights). Each tile's brightness is
 // then an estimate independent of its neighbours', and the chains move light
 // only within their tile. One tile, the whole film, is plain MLT.
 //
@@ -20,6 +21,12 @@
 #include <vector>
 
 namespace smallmlt {
+
+// The density, against the uniform one, of a large step's film position on
+// the pixels of a tile where the target is above 0, a share `share` of the
+// tile's (StratumWeights, cl/core/shared_types.h): (1 - (1 - A)^tries) / A,
+// and 1 where A is 0 or 1.
+double strata_large_density(double share);
 
 // --strata auto: the tile side that the rule below picks.
 constexpr std::uint32_t kStrataAuto = 0xFFFFFFFFu;

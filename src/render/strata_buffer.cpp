@@ -6,7 +6,7 @@ StrataBuffer::StrataBuffer(const ClContext& cl, const MemoryPlan& plan, const St
                            std::uint32_t group_chains)
     : cl_(cl), tiles_(cl, CL_MEM_READ_ONLY, plan.bytes(Buffer::StrataTiles)),
       group_tile_(cl, CL_MEM_READ_ONLY, plan.bytes(Buffer::GroupTiles)),
-      pb_(cl, CL_MEM_READ_ONLY, plan.bytes(Buffer::StrataWeights)),
+      weights_(cl, CL_MEM_READ_ONLY, plan.bytes(Buffer::StrataWeights)),
       group_tile_host_(group_tile_.bytes() / sizeof(std::uint32_t), 0),
       group_chains_(group_chains) {
     std::vector<FilmTile> tiles(tiles_.bytes() / sizeof(FilmTile));
@@ -14,7 +14,7 @@ StrataBuffer::StrataBuffer(const ClContext& cl, const MemoryPlan& plan, const St
               tiles.begin());
     tiles_.write(cl, tiles.data());
     group_tile_.fill_zero(cl);
-    pb_.fill_zero(cl);
+    set_weights({});
 }
 
 void StrataBuffer::deal(const std::vector<std::uint32_t>& tiles) {
@@ -23,10 +23,11 @@ void StrataBuffer::deal(const std::vector<std::uint32_t>& tiles) {
     group_tile_.write(cl_, group_tile_host_.data());
 }
 
-void StrataBuffer::set_kelemen_pb(const std::vector<float>& pb) {
-    std::vector<float> all(pb_.bytes() / sizeof(float), 0.0f);
-    std::copy(pb.begin(), pb.begin() + std::min(all.size(), pb.size()), all.begin());
-    pb_.write(cl_, all.data());
+void StrataBuffer::set_weights(const std::vector<StratumWeights>& weights) {
+    std::vector<StratumWeights> all(weights_.bytes() / sizeof(StratumWeights),
+                                    StratumWeights{0.0f, 1.0f});
+    std::copy(weights.begin(), weights.begin() + std::min(all.size(), weights.size()), all.begin());
+    weights_.write(cl_, all.data());
 }
 
 } // namespace smallmlt

@@ -1,6 +1,7 @@
 // The strata on the device (src/render/strata.hpp): the tiles, each
-// work-group's tile, p b0 of Kelemen's weights per tile and the chains of a
-// group, bound as the kernels' STRATA_ARGS (cl/mlt/mlt_step.cl).
+// work-group's tile, what each tile's large steps weigh (StratumWeights) and
+// the chains of a group, bound as the kernels' STRATA_ARGS
+// (cl/mlt/mlt_step.cl).
 #pragma once
 #include "device/memory_plan.hpp"
 #include "device/ocl.hpp"
@@ -13,23 +14,24 @@ namespace smallmlt {
 
 class StrataBuffer {
   public:
-    // The grid's tiles, every group in tile 0 and p b0 = 0, in the plan's
-    // buffers; group_chains chains to a work-group.
+    // The grid's tiles, every group in tile 0 and weights {0, 1} (expected
+    // values, large steps uniform on the tile), in the plan's buffers;
+    // group_chains chains to a work-group.
     StrataBuffer(const ClContext& cl, const MemoryPlan& plan, const StrataGrid& grid,
                  std::uint32_t group_chains);
     // Deals the work-groups to tiles: group g to tile tiles[g].
     void deal(const std::vector<std::uint32_t>& tiles);
     const std::vector<std::uint32_t>& group_tiles() const { return group_tile_host_; }
     std::uint32_t group_chains() const { return group_chains_; }
-    // p b0 per tile.
-    void set_kelemen_pb(const std::vector<float>& pb);
+    // The weights per tile.
+    void set_weights(const std::vector<StratumWeights>& weights);
     const ClBuffer& tiles() const { return tiles_; }
     const ClBuffer& group_tile() const { return group_tile_; }
-    const ClBuffer& kelemen_pb() const { return pb_; }
+    const ClBuffer& weights() const { return weights_; }
 
   private:
     const ClContext& cl_;
-    ClBuffer tiles_, group_tile_, pb_;
+    ClBuffer tiles_, group_tile_, weights_;
     std::vector<std::uint32_t> group_tile_host_;
     std::uint32_t group_chains_;
 };
@@ -37,7 +39,7 @@ class StrataBuffer {
 inline void kernel_arg(ClKernel& k, cl_uint& i, const StrataBuffer& s) {
     k.set_arg(i++, s.tiles());
     k.set_arg(i++, s.group_tile());
-    k.set_arg(i++, s.kelemen_pb());
+    k.set_arg(i++, s.weights());
     k.set_arg(i++, cl_uint(s.group_chains()));
 }
 

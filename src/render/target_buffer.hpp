@@ -24,11 +24,18 @@ class TargetBuffer {
     // where `omc`.
     void fix(RankGroup& ranks, std::uint32_t width, std::uint32_t height, const BurnInParts& parts,
              bool two_stage, bool omc);
+    // Cells `cells` of a width x height film with weights `w` (one per cell),
+    // 0 where `whole` (per cell; empty: none) says the OMC part renders the
+    // cell whole.
+    void set(const TargetCells& cells, std::uint32_t width, std::uint32_t height,
+             std::vector<float> w, const std::vector<bool>& whole);
     // The cells of weight 0 and the pixels they cover.
     std::uint32_t omc_cells() const { return omc_cells_; }
     std::uint64_t omc_pixels() const { return omc_pixels_; }
     // Whether pixel (x, y) lies in a cell of weight 0.
     bool omc_pixel(std::uint32_t x, std::uint32_t y) const;
+    // The share of tile t's pixels that lie in cells of weight above 0.
+    double chains_share(const FilmTile& t) const;
     const ClBuffer& weights() const { return weight_; }
     const TargetCells& cells() const { return cells_; }
     // The weights as the device holds them, one per cell (and 1 beyond).
