@@ -27,8 +27,9 @@
 namespace smallmlt {
 
 // On: lower MSE on ajar, veach-mis and cornell-glossy, half the block error
-// on the first two but 1.5 times it on cornell-glossy, no change elsewhere
-// (doc/RESULTS.md, "Cells for the OMC part").
+// on the first two and about `off`'s on cornell-glossy, no change elsewhere
+// (doc/RESULTS.md, "Cells for the OMC part" and "Large steps on the chains'
+// part of the film").
 constexpr bool kDefaultOmcCells = true;
 
 // Throws UsageError naming `flag` unless `name` is on or off.
