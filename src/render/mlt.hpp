@@ -138,7 +138,7 @@ class MltRenderer : public Integrator {
     // The pick's paths lie on `film`.
     void init_chains(const BurnInFilm& film);
     // What each tile's large steps weigh, once the target is fixed: their
-    // density on its chains' part and, with Kelemen's weights, p b0.
+    // density q on its chains' part and, with Kelemen's weights, p q b0.
     void set_stratum_weights(RankGroup& ranks);
     // --restart, once the chains have splatted what they owe: every chain
     // starts again at a pick of fresh burn-in rounds.

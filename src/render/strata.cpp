@@ -1,10 +1,9 @@
 #include "render/strata.hpp"
 
-#include <cmath>
-
 #include "base/error.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <numeric>
 #include <string>
 
