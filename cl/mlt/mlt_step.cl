@@ -43,7 +43,7 @@ inline MltTarget mlt_target(__global const float* weight, TargetCells cells, con
 /* Stratified MLT (src/render/strata.hpp): the chains of work-group g (of
  * MLT_GROUP threads, strata_group_chains chains) live in tile
  * strata_group_tile[g] of strata_tiles, whose large steps weigh
- * strata_weights[tile] (StratumWeights: Kelemen's p b0, b0 the tile's own
+ * strata_weights[tile] (StratumWeights: Kelemen's p q b0, b0 the tile's own
  * normalization, and the large steps' density). One tile, the whole film,
  * is plain MLT. */
 #define STRATA_ARGS                                                                                \
