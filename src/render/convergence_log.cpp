@@ -62,12 +62,14 @@ void ConvergenceLog::record(double render_s, double spp, const Image& img) {
     if (!log_) return;
     char unlit[32] = "";
     if (has_mask()) std::snprintf(unlit, sizeof unlit, "%.9g", last_.mse_unlit);
-    std::fprintf(log_, "%.4f,%.6g,%llu,%.9g,%.9g,%s,%.9g,%.9g\n", render_s, spp,
+    std::fprintf(log_, "%.6f,%.6g,%llu,%.9g,%.9g,%s,%.9g,%.9g\n", render_s, spp,
                  static_cast<unsigned long long>(std::llround(spp * double(pixels_))), last_.mse,
                  last_.rel_mse, unlit, last_.block8_mse, last_.block32_mse);
     std::fflush(log_);
-    while (next_s_ <= render_s)
-        next_s_ += interval_s_;
+    // At least the interval after this row: on a grid of the interval, a pass
+    // ending just before a grid point and the next just after it gave two
+    // rows a few microseconds apart, printed with the same seconds.
+    next_s_ = render_s + interval_s_;
 }
 
 void ConvergenceLog::finish(double render_s, double spp, const Image& img) {
