@@ -1,6 +1,6 @@
 // The cells the split's OMC part renders whole (src/render/omc_cells.hpp):
-// the rule per cell, and renders where it gives the OMC part every cell (the
-// furnace, against its closed form) or some of them (ajar, whose floor lit
+// the rule per cell and the chains' correlation on bright pixels, and renders where it gives the
+// OMC part every cell (the furnace, against its closed form) or some of them (ajar, whose floor lit
 // through the door's gap path tracing renders well). That the image stays
 // unbiased where cells are mixed is RenderBlocks (test_render_blocks.cpp).
 #include "base/error.hpp"
@@ -42,6 +42,11 @@ BurnInParts two_cells(const std::vector<double>& left, const std::vector<double>
 
 const TargetCells kTwoCells{1u, 2u}; // two cells of 2 x 2 pixels on a 4 x 2 film
 
+// The chains' default probability of a large step, which omc_cells weighs
+// a bright pixel's correlation by, and a small step's reach of one pixel;
+// without large steps the rule takes the chains to move freely everywhere.
+const ChainSteps kLargeStep{large_step_of(MltOptions{}), 1}, kFree{0.0, 1};
+
 // Samples of relative variance r: n - 1 zeros and one n, whose mean is 1
 // and whose unbiased sample variance is n (so r = n).
 std::vector<double> relative_variance(std::uint32_t n) {
@@ -69,20 +74,24 @@ TEST(OmcCells, ParseNamesTheFlag) {
 TEST(OmcCells, CellsWherePathTracingRendersTheChainsPartWell) {
     const std::uint32_t at = std::uint32_t(kChainsPayRatio); // r = the threshold
     std::vector<bool> c = smallmlt::omc_cells(
-        kTwoCells, 4, 2, two_cells(relative_variance(at - 1), relative_variance(at + 1)));
+        kTwoCells, 4, 2, two_cells(relative_variance(at - 1), relative_variance(at + 1)),
+        kLargeStep);
     ASSERT_EQ(c.size(), 2u);
     EXPECT_TRUE(c[0]) << "r = " << at - 1 << " is below the threshold";
     EXPECT_FALSE(c[1]) << "r = " << at + 1 << " is above it";
 
-    c = smallmlt::omc_cells(kTwoCells, 4, 2, two_cells({2.0, 2.0}, {0.0, 0.0}));
+    c = smallmlt::omc_cells(kTwoCells, 4, 2, two_cells({2.0, 2.0}, {0.0, 0.0}), kLargeStep);
     EXPECT_TRUE(c[0]) << "smooth light (r = 0)";
     EXPECT_FALSE(c[1]) << "no light found: the chains'";
+    c = smallmlt::omc_cells(kTwoCells, 4, 2, two_cells({2.0, 2.0}, {}), kLargeStep);
+    EXPECT_TRUE(c[0]) << "smooth light beside a cell without samples";
+    EXPECT_FALSE(c[1]) << "no samples: the chains'";
 
     // Smooth light with a share s / (s + 1) behind glass, s per sample.
     const double below = 0.5 * kChainsPayBehindShare, above = 2 * kChainsPayBehindShare;
     c = smallmlt::omc_cells(
         kTwoCells, 4, 2,
-        two_cells({1.0, 1.0}, {1.0, 1.0}, below / (1 - below), above / (1 - above)));
+        two_cells({1.0, 1.0}, {1.0, 1.0}, below / (1 - below), above / (1 - above)), kLargeStep);
     EXPECT_TRUE(c[0]) << "little light behind glass";
     EXPECT_FALSE(c[1]) << "light behind glass";
 }
@@ -93,16 +102,98 @@ TEST(OmcCells, CellsWherePathTracingRendersTheChainsPartWell) {
 // the chains beside a smooth one (two cells go only where r_c < R / 2).
 TEST(OmcCells, CellsAreChosenTogether) {
     ASSERT_EQ(kChainsPayRatio, 4.0);
-    std::vector<bool> c =
-        smallmlt::omc_cells(kTwoCells, 4, 2, two_cells({0.0, 0.0, 0.0}, relative_variance(3)));
+    std::vector<bool> c = smallmlt::omc_cells(
+        kTwoCells, 4, 2, two_cells({0.0, 0.0, 0.0}, relative_variance(3)), kLargeStep);
     EXPECT_FALSE(c[0]) << "no light";
     EXPECT_TRUE(c[1]) << "r = 3 alone";
-    c = smallmlt::omc_cells(kTwoCells, 4, 2, two_cells({1.0, 1.0, 1.0}, relative_variance(3)));
+    c = smallmlt::omc_cells(kTwoCells, 4, 2, two_cells({1.0, 1.0, 1.0}, relative_variance(3)),
+                            kLargeStep);
     EXPECT_TRUE(c[0]) << "smooth";
     EXPECT_FALSE(c[1]) << "r = 3 beside a cell that goes";
-    c = smallmlt::omc_cells(kTwoCells, 4, 2, two_cells({1.0, 1.0, 1.0}, {0.5, 1.5}));
+    c = smallmlt::omc_cells(kTwoCells, 4, 2, two_cells({1.0, 1.0, 1.0}, {0.5, 1.5}), kLargeStep);
     EXPECT_TRUE(c[0]) << "smooth";
     EXPECT_TRUE(c[1]) << "r = 1/2 beside it";
+}
+
+// A chain stays on a state far brighter than b until a large step is
+// accepted: correlation tau at most, I / (tau p b A) above, for an area of
+// A pixels of such light.
+TEST(OmcCells, ChainCorrelationGrowsWithBrightness) {
+    const double b = 2, p = 0.25, tau = kChainCorrelation;
+    EXPECT_DOUBLE_EQ(chain_correlation(b, b, 1, p), 1.0);
+    EXPECT_DOUBLE_EQ(chain_correlation(tau * p * b, b, 1, p), 1.0);
+    EXPECT_DOUBLE_EQ(chain_correlation(10 * tau * p * b, b, 1, p), 10.0);
+    EXPECT_DOUBLE_EQ(chain_correlation(10 * tau * p * b, b, 4, p), 2.5) << "an area of 4 pixels";
+    EXPECT_DOUBLE_EQ(chain_correlation(10 * tau * p * b, b, 20, p), 1.0) << "of 20";
+    EXPECT_DOUBLE_EQ(chain_correlation(100 * b, b, 1, 0.0), 1.0) << "no large steps";
+    EXPECT_DOUBLE_EQ(chain_correlation(100 * b, 0.0, 1, p), 1.0) << "no light";
+}
+
+// The area of a pixel's light within reach: 1 + (W - 1) min(1, n / m), n
+// the mean of the W - 1 others in reach.
+TEST(OmcCells, LightAreaCountsPixelsAsBrightWithinReach) {
+    const std::uint32_t w = 5, h = 5;
+    std::vector<double> m(w * h, 1.0);
+    std::vector<double> a = light_areas(m, w, h, 1);
+    EXPECT_DOUBLE_EQ(a[2 * w + 2], 9.0) << "inside";
+    EXPECT_DOUBLE_EQ(a[2], 6.0) << "on an edge";
+    EXPECT_DOUBLE_EQ(a[0], 4.0) << "in a corner";
+    m[2 * w + 2] = 100; // the centre 100 times brighter
+    m[0] = 0;
+    a = light_areas(m, w, h, 1);
+    EXPECT_DOUBLE_EQ(a[2 * w + 2], 1.08) << "alone: 1 + 8 (8 / 8) / 100";
+    EXPECT_DOUBLE_EQ(a[2 * w + 1], 9.0) << "beside it";
+    EXPECT_DOUBLE_EQ(a[0], 1.0) << "no light";
+    a = light_areas(m, w, h, 2);
+    EXPECT_DOUBLE_EQ(a[2 * w + 2], 1.23) << "reach 2: 1 + 24 (23 / 24) / 100";
+}
+
+// Parts of a w x 2 film of cells of 2 x 2 pixels (TargetCells{1, w / 2})
+// whose pixels hold noisy light (r = 16: the chains pay there) but pixel
+// (0, 0), 1,000 times brighter at r = 4.
+BurnInParts bright_pixel_film(std::uint32_t w) {
+    BurnInParts parts(2 * w);
+    for (std::uint32_t p = 0; p < 2 * w; ++p)
+        for (double y : relative_variance(p == 0 ? 4 : 16)) {
+            const double l = p == 0 ? 1000 * y : y;
+            for (int c = 0; c < 3; ++c)
+                parts.rest[3 * p + c] += l;
+            parts.rest_y2[p] += l * l;
+            ++parts.count[p];
+        }
+    return parts;
+}
+
+// On a 16 x 2 film (the small steps' reach a pixel, so the bright pixel's
+// area is 1.0), were the chains to move freely on the bright pixel,
+// its cell would stay theirs (r_c = 165); but they would stay there until
+// a large step is accepted, about I / (p b) = 370 steps (b = 9), and its
+// cell goes to the OMC part, alone.
+TEST(OmcCells, CellsWhereChainsWouldStayOnABrightPixel) {
+    const std::uint32_t w = 16;
+    const BurnInParts parts = bright_pixel_film(w);
+    std::vector<bool> c = smallmlt::omc_cells({1u, w / 2}, w, 2, parts, kFree);
+    ASSERT_EQ(c.size(), w / 2);
+    for (std::uint32_t i = 0; i < c.size(); ++i)
+        EXPECT_FALSE(c[i]) << "cell " << i << ", the chains moving freely";
+    c = smallmlt::omc_cells({1u, w / 2}, w, 2, parts, kLargeStep);
+    EXPECT_TRUE(c[0]) << "the bright pixel's cell";
+    for (std::uint32_t i = 1; i < c.size(); ++i)
+        EXPECT_FALSE(c[i]) << "cell " << i;
+}
+
+// The bright pixel's error with the chains does not fall as their light
+// does, so on an 8 x 2 film (b = 17), where its cell stays with the chains
+// (giving it to the OMC part costs more), no noisy cell goes either: taken
+// to fall, the bright pixel's error would make each noisy cell's light worth
+// removing.
+TEST(OmcCells, BrightPixelsErrorStaysWhenTheChainsLightFalls) {
+    const std::uint32_t w = 8;
+    const std::vector<bool> c =
+        smallmlt::omc_cells({1u, w / 2}, w, 2, bright_pixel_film(w), kLargeStep);
+    ASSERT_EQ(c.size(), w / 2);
+    for (std::uint32_t i = 0; i < c.size(); ++i)
+        EXPECT_FALSE(c[i]) << "cell " << i;
 }
 
 // r_c is the pixels' own variance, not the spread between them: a cell of
@@ -114,7 +205,7 @@ TEST(OmcCells, RelativeVarianceIsWithinPixels) {
             parts.rest[3 * p + c] *= 100;
         parts.rest_y2[p] *= 100 * 100;
     }
-    std::vector<bool> c = smallmlt::omc_cells(kTwoCells, 4, 2, parts);
+    std::vector<bool> c = smallmlt::omc_cells(kTwoCells, 4, 2, parts, kLargeStep);
     EXPECT_TRUE(c[0]);
     EXPECT_TRUE(c[1]);
 }
@@ -214,7 +305,7 @@ TEST(OmcCells, FilmAndCellPassesNumberTheirOwnSamples) {
     }
     TargetBuffer target(test::cl(), kTargetMaxCells * sizeof(float));
     SingleRank one;
-    target.fix(one, w, h, parts, false, true);
+    target.fix(one, w, h, parts, false, true, kLargeStep);
     ASSERT_GT(target.omc_pixels(), 0u);
     ASSERT_LT(target.omc_pixels(), std::uint64_t(w) * h);
     const OmcPart part{Split::Direct, &scene, {}, &target};

@@ -147,7 +147,8 @@ MltBurnIn::SplitEvidence MltBurnIn::split_evidence(const BurnInParts& parts) {
 
 bool MltBurnIn::fix_target(RankGroup& ranks, const SceneBuffers& scene, TargetBuffer& target,
                            bool two_stage, bool omc) {
-    target.fix(ranks, scene.frame.width, scene.frame.height, parts_, two_stage, omc);
+    target.fix(ranks, scene.frame.width, scene.frame.height, parts_, two_stage, omc,
+               {large_step_of(opt_), film_step_pixels(opt_, scene.frame.width)});
     if (target.omc_cells() == 0) return two_stage;
     // The parts so far chose the cells, and their MLT parts there are the
     // chains' no more: they are the evidence for --split auto, and the image

@@ -7,6 +7,7 @@
 #include "render/split.hpp"
 #include "render/target.hpp"
 
+#include <algorithm>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -113,6 +114,14 @@ constexpr float default_large_step(bool burn_in, bool kelemen) {
 // The large step's probability of a render of `opt`.
 inline float large_step_of(const MltOptions& opt) {
     return opt.large_step.value_or(default_large_step(opt.burn_in, opt.kelemen));
+}
+
+// The largest move of a small step on the film, in pixels across a film
+// `width` pixels wide (--film-step; cl/sampling/sample_chain.cl).
+inline std::uint32_t film_step_pixels(const MltOptions& opt, std::uint32_t width) {
+    const std::uint32_t kelemen = std::max((width + 32) / 64, 1u);
+    if (opt.film_step == kFilmStepAuto) return std::max(kelemen, kFilmStepFloorPixels);
+    return opt.film_step ? opt.film_step : kelemen;
 }
 
 // Kelemen's weights in force: asked for, with large steps to weigh.

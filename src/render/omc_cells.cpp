@@ -17,21 +17,72 @@ bool parse_omc_cells(const std::string& flag, const std::string& name) {
     throw UsageError(flag + " " + name + ": expected on or off");
 }
 
+double chain_correlation(double mean, double b, double area, double large_step) {
+    if (!(large_step > 0 && b > 0 && area >= 1)) return 1.0;
+    return std::max(1.0, mean / (kChainCorrelation * large_step * b * area));
+}
+
+std::vector<double> light_areas(const std::vector<double>& means, std::uint32_t width,
+                                std::uint32_t height, std::uint32_t reach) {
+    // Sums over rectangles from a summed-area table: row y + 1, column x + 1
+    // holds the sum of the means above and left of (x, y), inclusive.
+    const std::size_t row = std::size_t(width) + 1;
+    std::vector<double> sat(row * (height + 1), 0.0);
+    for (std::size_t y = 0; y < height; ++y)
+        for (std::size_t x = 0; x < width; ++x)
+            sat[(y + 1) * row + x + 1] = means[y * width + x] + sat[y * row + x + 1] +
+                                         sat[(y + 1) * row + x] - sat[y * row + x];
+    std::vector<double> area(means.size(), 1.0);
+    for (std::uint32_t y = 0; y < height; ++y)
+        for (std::uint32_t x = 0; x < width; ++x) {
+            const std::size_t p = std::size_t(y) * width + x;
+            const std::size_t x0 = x > reach ? x - reach : 0, y0 = y > reach ? y - reach : 0;
+            const std::size_t x1 = std::min(width, x + reach + 1),
+                              y1 = std::min(height, y + reach + 1);
+            const double others = double((x1 - x0) * (y1 - y0) - 1);
+            const double sum = sat[y1 * row + x1] - sat[y0 * row + x1] - sat[y1 * row + x0] +
+                               sat[y0 * row + x0] - means[p];
+            if (means[p] > 0 && others > 0)
+                area[p] = 1 + others * std::min(1.0, sum / others / means[p]);
+        }
+    return area;
+}
+
 namespace {
 
 struct Candidate {
     std::uint32_t cell;
-    double light, pixels, variance; // L_c = P_c b_c, P_c, V_c
+    double light, pixels, variance; // L_c, P_c, V_c
+    double free, stuck;             // F_c, K_c: chains_error
+};
+
+// The chains' squared error on the cells they render, summed over pixels,
+// per mutation and in units of tau b P (split.hpp, kChainCorrelation): a
+// pixel p of light L_p at correlation tau_p adds L_p tau_p / tau. With
+// tau_p = tau max(1, I_p / (tau p b A_p)) (chain_correlation) and b P the
+// chains' light L, that is L_p L where the chains move freely and L_p L I_p
+// / (tau p b A_p) where they would stay, whatever light the chains leave to
+// the OMC part: a small bright area keeps its error when b falls. So C = F L
+// + K, with F the light of the free pixels and K the other pixels' terms,
+// each summed over the cells.
+struct ChainsError {
+    double light = 0, free = 0, stuck = 0; // L, F, K
+    double value() const {
+        return std::max(free, 0.0) * std::max(light, 0.0) + std::max(stuck, 0.0);
+    }
 };
 
 // The cells chosen, S, share one rate of samples per pixel (split.cpp), so
-// their error goes as sqrt(P_S V_S), and the chains' as their light: S
-// maximises the gain sqrt(R) L_S - sqrt(P_S V_S), R = kChainsPayRatio. For
-// one cell that is chains_pay's rule, r_c < R. Greedily: each cell in turn
-// the one that adds most, keeping the best set along the way.
-std::vector<std::uint32_t> choose(std::vector<Candidate> open) {
-    const double root_r = std::sqrt(kChainsPayRatio);
-    double light = 0, pixels = 0, variance = 0; // of S so far
+// their error goes as sqrt(P_S V_S), and the chains' as sqrt(C): S
+// maximises the gain sqrt(R) (sqrt(C) - sqrt(C without S)) - sqrt(P_S V_S),
+// R = kChainsPayRatio. Where the chains move freely everywhere (C = L^2)
+// that is sqrt(R) L_S - sqrt(P_S V_S), and for one cell chains_pay's rule,
+// r_c < R. Greedily: each cell in turn the one that adds most, keeping the
+// best set along the way.
+std::vector<std::uint32_t> choose(std::vector<Candidate> open, const ChainsError& film) {
+    const double root_r = std::sqrt(kChainsPayRatio), all = std::sqrt(film.value());
+    ChainsError left = film;
+    double pixels = 0, variance = 0; // of S so far
     std::vector<std::uint32_t> order;
     double best = 0;
     std::size_t best_size = 0;
@@ -40,14 +91,16 @@ std::vector<std::uint32_t> choose(std::vector<Candidate> open) {
         double pick_gain = -std::numeric_limits<double>::infinity();
         for (std::size_t i = 0; i < open.size(); ++i) {
             const Candidate& c = open[i];
-            const double g = root_r * (light + c.light) -
+            const ChainsError rest{left.light - c.light, left.free - c.free, left.stuck - c.stuck};
+            const double g = root_r * (all - std::sqrt(rest.value())) -
                              std::sqrt((pixels + c.pixels) * (variance + c.variance));
             if (i == 0 || g > pick_gain) pick = i, pick_gain = g;
         }
-        light += open[pick].light;
-        pixels += open[pick].pixels;
-        variance += open[pick].variance;
-        order.push_back(open[pick].cell);
+        const Candidate& c = open[pick];
+        left = {left.light - c.light, left.free - c.free, left.stuck - c.stuck};
+        pixels += c.pixels;
+        variance += c.variance;
+        order.push_back(c.cell);
         open.erase(open.begin() + std::ptrdiff_t(pick));
         if (pick_gain > best) best = pick_gain, best_size = order.size();
     }
@@ -58,10 +111,16 @@ std::vector<std::uint32_t> choose(std::vector<Candidate> open) {
 } // namespace
 
 std::vector<bool> omc_cells(const TargetCells& cells, std::uint32_t width, std::uint32_t height,
-                            const BurnInParts& parts) {
+                            const BurnInParts& parts, const ChainSteps& steps) {
     const std::uint32_t n = target_cell_count(cells, height);
     std::vector<PixelVariance> variance(n);
-    std::vector<double> lum(n, 0.0), behind(n, 0.0), samples(n, 0.0), pixels(n, 0.0);
+    std::vector<double> lum(n, 0.0), free(n, 0.0), stuck(n, 0.0), behind(n, 0.0), samples(n, 0.0),
+        pixels(n, 0.0);
+    const double b = parts.mean(parts.rest);
+    std::vector<double> means(std::size_t(width) * height, 0.0);
+    for (std::size_t p = 0; p < means.size(); ++p)
+        if (parts.count[p] > 0) means[p] = parts.luminance(parts.rest, p) / double(parts.count[p]);
+    const std::vector<double> area = light_areas(means, width, height, steps.film_pixels);
     for (std::uint32_t y = 0; y < height; ++y)
         for (std::uint32_t x = 0; x < width; ++x) {
             const std::size_t p = std::size_t(y) * width + x;
@@ -69,19 +128,37 @@ std::vector<bool> omc_cells(const TargetCells& cells, std::uint32_t width, std::
             const double l = parts.luminance(parts.rest, p);
             variance[c].add(l, parts.rest_y2[p], parts.count[p]);
             lum[c] += l;
+            const double tau = chain_correlation(means[p], b, area[p], steps.large);
+            (tau > 1 ? stuck[c] : free[c]) += l * tau;
             behind[c] += parts.behind[p];
             samples[c] += double(parts.count[p]);
             pixels[c] += 1;
         }
     std::vector<Candidate> open;
+    ChainsError film;
     for (std::uint32_t c = 0; c < n; ++c) {
         if (!(lum[c] > 0)) continue; // no light found: the chains'
-        const double b = lum[c] / samples[c];
-        if (behind_share(behind[c] / samples[c], b) > kChainsPayBehindShare) continue;
-        open.push_back({c, pixels[c] * b, pixels[c], variance[c].value()});
+        // Sums over the cell's paths to light, as L_c = P_c b_c.
+        const double per_path = pixels[c] / samples[c];
+        const Candidate cand{c,
+                             lum[c] * per_path,
+                             pixels[c],
+                             variance[c].value(),
+                             free[c] * per_path,
+                             stuck[c] * per_path};
+        film.light += cand.light;
+        film.free += cand.free;
+        film.stuck += cand.stuck;
+        if (behind_share(behind[c] / samples[c], lum[c] / samples[c]) > kChainsPayBehindShare)
+            continue;
+        open.push_back(cand);
     }
+    // K's terms take the chains' light L as a factor (ChainsError).
+    for (Candidate& c : open)
+        c.stuck *= film.light;
+    film.stuck *= film.light;
     std::vector<bool> whole(n, false);
-    for (std::uint32_t c : choose(std::move(open)))
+    for (std::uint32_t c : choose(std::move(open), film))
         whole[c] = true;
     return whole;
 }

@@ -7,10 +7,13 @@
 // alone, a cell would go where the MLT part's per-pixel relative variance
 // r_c = V_c / (P_c b_c^2) of its P_c pixels is below kChainsPayRatio; as
 // the cells that go share one rate of samples, they are chosen together
-// (omc_cells.cpp, choose; doc/design.md). Never chosen: a cell with more
-// than kChainsPayBehindShare of the light its paths aimed at behind smooth
-// transmitters, and one where the paths found no MLT-part light: light
-// there is rare, and finding rare light is what the chains are for.
+// (omc_cells.cpp, choose; doc/design.md), and the chains' error counts
+// where they would stay on small areas far brighter than b
+// (chain_correlation).
+// Never chosen: a cell with more than kChainsPayBehindShare of the light
+// its paths aimed at behind smooth transmitters, and one where the paths
+// found no MLT-part light: light there is rare, and finding rare light is
+// what the chains are for.
 // The cells are chosen by burn-in rounds of their own, before the usual
 // ones (burn_in_rounds). Where some go to the OMC part, those rounds' parts
 // are dropped (src/render/mlt_burn_in.hpp): the image and b use only
@@ -35,9 +38,35 @@ constexpr bool kDefaultOmcCells = true;
 // Throws UsageError naming `flag` unless `name` is on or off.
 bool parse_omc_cells(const std::string& flag, const std::string& name);
 
+// What the cells' rule needs of the chains' steps: the probability of a
+// large step and a small step's largest move on the film, in pixels.
+struct ChainSteps {
+    double large = 0;
+    std::uint32_t film_pixels = 1;
+};
+
+// The chains' correlation at a pixel of mean luminance `mean`, in units of
+// tau (kChainCorrelation). A chain in a state far brighter than the chains'
+// mean b leaves the bright area around it only when a large step
+// (probability p) proposes a state it accepts, about b / I of them: it stays
+// about I / (p b) steps. The count of chains in an area of A pixels of such
+// light is then what sets their brightness, so each pixel's samples are
+// correlated over about I / (p b A) steps, where chains that move freely
+// have tau: max(1, mean / (tau p b A)) for A = `area`; 1 without large steps
+// or light.
+double chain_correlation(double mean, double b, double area, double large_step);
+
+// Per pixel of a width x height film of mean luminances `means`: the area,
+// in pixels, of light like its own within `reach` pixels of it: 1 + (W - 1)
+// min(1, n / m), where the W - 1 other pixels in reach have the mean n and
+// it has m.
+std::vector<double> light_areas(const std::vector<double>& means, std::uint32_t width,
+                                std::uint32_t height, std::uint32_t reach);
+
 // Per cell of `cells` on a width x height film: true where the OMC part
-// renders it whole, from the burn-in's parts.
+// renders it whole, from the burn-in's parts, for chains whose steps are
+// `steps`.
 std::vector<bool> omc_cells(const TargetCells& cells, std::uint32_t width, std::uint32_t height,
-                            const BurnInParts& parts);
+                            const BurnInParts& parts, const ChainSteps& steps);
 
 } // namespace smallmlt

@@ -6,6 +6,7 @@
 #pragma once
 #include "device/ocl.hpp"
 #include "render/burn_in.hpp"
+#include "render/omc_cells.hpp"
 #include "render/ranks.hpp"
 #include "shared_types.h"
 
@@ -21,9 +22,9 @@ class TargetBuffer {
     // Cells and weights from the burn-in's parts, summed over every rank so
     // that all ranks fix one target: the two-stage target's weights where
     // `two_stage` (else 1), and 0 in the cells the OMC part renders whole
-    // where `omc`.
+    // where `omc`, for chains whose steps are `steps` (omc_cells).
     void fix(RankGroup& ranks, std::uint32_t width, std::uint32_t height, const BurnInParts& parts,
-             bool two_stage, bool omc);
+             bool two_stage, bool omc, const ChainSteps& steps);
     // Cells `cells` of a width x height film with weights `w` (one per cell),
     // 0 where `whole` (per cell; empty: none) says the OMC part renders the
     // cell whole.
