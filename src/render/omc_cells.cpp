@@ -53,7 +53,7 @@ namespace {
 struct Candidate {
     std::uint32_t cell;
     double light, pixels, variance; // L_c, P_c, V_c
-    double free, stuck;             // F_c, K_c: chains_error
+    double free, stuck;             // F_c, K_c (ChainsError)
 };
 
 // The chains' squared error on the cells they render, summed over pixels,
@@ -69,6 +69,10 @@ struct ChainsError {
     double light = 0, free = 0, stuck = 0; // L, F, K
     double value() const {
         return std::max(free, 0.0) * std::max(light, 0.0) + std::max(stuck, 0.0);
+    }
+    // Without candidate c's cell.
+    ChainsError without(const Candidate& c) const {
+        return {light - c.light, free - c.free, stuck - c.stuck};
     }
 };
 
@@ -91,13 +95,12 @@ std::vector<std::uint32_t> choose(std::vector<Candidate> open, const ChainsError
         double pick_gain = -std::numeric_limits<double>::infinity();
         for (std::size_t i = 0; i < open.size(); ++i) {
             const Candidate& c = open[i];
-            const ChainsError rest{left.light - c.light, left.free - c.free, left.stuck - c.stuck};
-            const double g = root_r * (all - std::sqrt(rest.value())) -
+            const double g = root_r * (all - std::sqrt(left.without(c).value())) -
                              std::sqrt((pixels + c.pixels) * (variance + c.variance));
             if (i == 0 || g > pick_gain) pick = i, pick_gain = g;
         }
         const Candidate& c = open[pick];
-        left = {left.light - c.light, left.free - c.free, left.stuck - c.stuck};
+        left = left.without(c);
         pixels += c.pixels;
         variance += c.variance;
         order.push_back(c.cell);
