@@ -149,13 +149,13 @@ TEST(OmcCells, LightAreaCountsPixelsAsBrightWithinReach) {
 }
 
 // Parts of a w x 2 film of cells of 2 x 2 pixels (TargetCells{1, w / 2})
-// whose pixels hold noisy light (r = 16: the chains pay there) but pixel
-// (0, 0), 1,000 times brighter at r = 4.
-BurnInParts bright_pixel_film(std::uint32_t w) {
+// whose pixels hold noisy light (r = 16: the chains pay there) but the
+// first `bright` of row 0, 1,000 times brighter at r = 4.
+BurnInParts bright_pixel_film(std::uint32_t w, std::uint32_t bright = 2) {
     BurnInParts parts(2 * w);
     for (std::uint32_t p = 0; p < 2 * w; ++p)
-        for (double y : relative_variance(p == 0 ? 4 : 16)) {
-            const double l = p == 0 ? 1000 * y : y;
+        for (double y : relative_variance(p < bright ? 4 : 16)) {
+            const double l = p < bright ? 1000 * y : y;
             for (int c = 0; c < 3; ++c)
                 parts.rest[3 * p + c] += l;
             parts.rest_y2[p] += l * l;
@@ -164,36 +164,67 @@ BurnInParts bright_pixel_film(std::uint32_t w) {
     return parts;
 }
 
-// On a 16 x 2 film (the small steps' reach a pixel, so the bright pixel's
-// area is 1.0), were the chains to move freely on the bright pixel,
-// its cell would stay theirs (r_c = 165); but they would stay there until
-// a large step is accepted, about I / (p b) = 370 steps (b = 9), and its
+// That the rule gives no cell of bright_pixel_film(w, bright) to the OMC
+// part, with the chains' large steps.
+void expect_no_cell_goes(std::uint32_t w, std::uint32_t bright) {
+    const std::vector<bool> c =
+        smallmlt::omc_cells({1u, w / 2}, w, 2, bright_pixel_film(w, bright), kLargeStep);
+    ASSERT_EQ(c.size(), w / 2);
+    for (std::uint32_t i = 0; i < c.size(); ++i)
+        EXPECT_FALSE(c[i]) << "cell " << i;
+}
+
+// On a 32 x 2 film (the small steps' reach a pixel, so each bright pixel's
+// area is 2.0), were the chains to move freely on the bright pixels, their
+// cell would stay theirs (r_c = 8); but they would stay there until a
+// large step is accepted, about I / (p b) = 370 steps (b = 9), and the
 // cell goes to the OMC part, alone.
 TEST(OmcCells, CellsWhereChainsWouldStayOnABrightPixel) {
-    const std::uint32_t w = 16;
+    const std::uint32_t w = 64;
     const BurnInParts parts = bright_pixel_film(w);
     std::vector<bool> c = smallmlt::omc_cells({1u, w / 2}, w, 2, parts, kFree);
     ASSERT_EQ(c.size(), w / 2);
     for (std::uint32_t i = 0; i < c.size(); ++i)
         EXPECT_FALSE(c[i]) << "cell " << i << ", the chains moving freely";
     c = smallmlt::omc_cells({1u, w / 2}, w, 2, parts, kLargeStep);
-    EXPECT_TRUE(c[0]) << "the bright pixel's cell";
+    EXPECT_TRUE(c[0]) << "the bright pixels' cell";
     for (std::uint32_t i = 1; i < c.size(); ++i)
         EXPECT_FALSE(c[i]) << "cell " << i;
 }
 
-// The bright pixel's error with the chains does not fall as their light
-// does, so on an 8 x 2 film (b = 17), where its cell stays with the chains
-// (giving it to the OMC part costs more), no noisy cell goes either: taken
-// to fall, the bright pixel's error would make each noisy cell's light worth
-// removing.
+// A bright pixel with no other within kLoneReach counts as light the chains
+// move freely on (without_lone_pixels): no cell goes, as where they move
+// freely everywhere.
+TEST(OmcCells, ALoneBrightPixelIsNotAnAreaTheChainsStayOn) {
+    expect_no_cell_goes(16, 1);
+}
+
+// A pixel's excess stays where another within kLoneReach (2) has some.
+TEST(OmcCells, LonePixelsLoseTheirExcess) {
+    ASSERT_EQ(kLoneReach, 2u);
+    const std::uint32_t w = 8, h = 4;
+    std::vector<double> e(w * h, 0.0);
+    e[1 * w + 1] = 5; // (1, 1) and (3, 2): 2 apart
+    e[2 * w + 3] = 3;
+    e[0 * w + 7] = 4; // (7, 0): 4 from (3, 2)
+    e[3 * w + 6] = 2; // (6, 3): 3 from (3, 2)
+    const std::vector<double> kept = without_lone_pixels(e, w, h);
+    EXPECT_DOUBLE_EQ(kept[1 * w + 1], 5.0);
+    EXPECT_DOUBLE_EQ(kept[2 * w + 3], 3.0);
+    EXPECT_DOUBLE_EQ(kept[0 * w + 7], 0.0) << "alone in a corner";
+    EXPECT_DOUBLE_EQ(kept[3 * w + 6], 0.0) << "3 from the nearest";
+    for (std::size_t p = 0; p < e.size(); ++p)
+        EXPECT_TRUE(e[p] != 0 || kept[p] == 0) << "pixel " << p << " gained an excess";
+}
+
+// The bright pixels' error with the chains does not fall as their light
+// does. On a 32 x 2 film (b = 13) with three bright pixels, two in the
+// first cell and one in the second, giving the first cell to the OMC part
+// leaves the third pixel's excess whole, and both cells stay with the
+// chains; taken to fall with the chains' light, that excess would shrink
+// as the first cell's light left, and the first cell would go.
 TEST(OmcCells, BrightPixelsErrorStaysWhenTheChainsLightFalls) {
-    const std::uint32_t w = 8;
-    const std::vector<bool> c =
-        smallmlt::omc_cells({1u, w / 2}, w, 2, bright_pixel_film(w), kLargeStep);
-    ASSERT_EQ(c.size(), w / 2);
-    for (std::uint32_t i = 0; i < c.size(); ++i)
-        EXPECT_FALSE(c[i]) << "cell " << i;
+    expect_no_cell_goes(32, 3);
 }
 
 // r_c is the pixels' own variance, not the spread between them: a cell of

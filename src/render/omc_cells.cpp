@@ -48,31 +48,47 @@ std::vector<double> light_areas(const std::vector<double>& means, std::uint32_t 
     return area;
 }
 
+std::vector<double> without_lone_pixels(std::vector<double> excess, std::uint32_t width,
+                                        std::uint32_t height) {
+    const std::uint32_t r = kLoneReach;
+    const std::vector<double> all = excess;
+    for (std::uint32_t y = 0; y < height; ++y)
+        for (std::uint32_t x = 0; x < width; ++x) {
+            bool beside = false;
+            for (std::uint32_t qy = y > r ? y - r : 0; qy < std::min(height, y + r + 1); ++qy)
+                for (std::uint32_t qx = x > r ? x - r : 0; qx < std::min(width, x + r + 1); ++qx)
+                    beside |= (qx != x || qy != y) && all[std::size_t(qy) * width + qx] > 0;
+            if (!beside) excess[std::size_t(y) * width + x] = 0;
+        }
+    return excess;
+}
+
 namespace {
 
 struct Candidate {
     std::uint32_t cell;
     double light, pixels, variance; // L_c, P_c, V_c
-    double free, stuck;             // F_c, K_c (ChainsError)
+    double stuck;                   // K_c / L_0 (ChainsError)
 };
 
 // The chains' squared error on the cells they render, summed over pixels,
 // per mutation and in units of tau b P (split.hpp, kChainCorrelation): a
-// pixel p of light L_p at correlation tau_p adds L_p tau_p / tau. With
-// tau_p = tau max(1, I_p / (tau p b A_p)) (chain_correlation) and b P the
-// chains' light L, that is L_p L where the chains move freely and L_p L I_p
-// / (tau p b A_p) where they would stay, whatever light the chains leave to
-// the OMC part: a small bright area keeps its error when b falls. So C = F L
-// + K, with F the light of the free pixels and K the other pixels' terms,
-// each summed over the cells.
+// pixel p of light L_p at correlation tau_p adds L_p L tau_p / tau, with b P
+// the chains' light L. Were they to move freely everywhere that is L^2.
+// Where they would stay (tau_p = tau max(1, I_p / (tau p b A_p)),
+// chain_correlation) it adds the excess L_p (tau_p / tau - 1) L_0, with
+// L_0 the chains' light before any cell goes: as b falls, I_p / b grows and
+// a small bright area keeps its error. So C = L^2 + K, K summed over the
+// pixels where the chains would stay beside another such pixel
+// (without_lone_pixels).
 struct ChainsError {
-    double light = 0, free = 0, stuck = 0; // L, F, K
+    double light = 0, stuck = 0, light_0 = 0; // L, K / L_0, L_0
     double value() const {
-        return std::max(free, 0.0) * std::max(light, 0.0) + std::max(stuck, 0.0);
+        return std::max(light, 0.0) * std::max(light, 0.0) + std::max(stuck, 0.0) * light_0;
     }
     // Without candidate c's cell.
     ChainsError without(const Candidate& c) const {
-        return {light - c.light, free - c.free, stuck - c.stuck};
+        return {light - c.light, stuck - c.stuck, light_0};
     }
 };
 
@@ -117,13 +133,16 @@ std::vector<bool> omc_cells(const TargetCells& cells, std::uint32_t width, std::
                             const BurnInParts& parts, const ChainSteps& steps) {
     const std::uint32_t n = target_cell_count(cells, height);
     std::vector<PixelVariance> variance(n);
-    std::vector<double> lum(n, 0.0), free(n, 0.0), stuck(n, 0.0), behind(n, 0.0), samples(n, 0.0),
-        pixels(n, 0.0);
+    std::vector<double> lum(n, 0.0), stuck(n, 0.0), behind(n, 0.0), samples(n, 0.0), pixels(n, 0.0);
     const double b = parts.mean(parts.rest);
     std::vector<double> means(std::size_t(width) * height, 0.0);
     for (std::size_t p = 0; p < means.size(); ++p)
         if (parts.count[p] > 0) means[p] = parts.luminance(parts.rest, p) / double(parts.count[p]);
     const std::vector<double> area = light_areas(means, width, height, steps.film_pixels);
+    std::vector<double> excess(means.size());
+    for (std::size_t p = 0; p < means.size(); ++p)
+        excess[p] = chain_correlation(means[p], b, area[p], steps.large) - 1;
+    excess = without_lone_pixels(std::move(excess), width, height);
     for (std::uint32_t y = 0; y < height; ++y)
         for (std::uint32_t x = 0; x < width; ++x) {
             const std::size_t p = std::size_t(y) * width + x;
@@ -131,8 +150,7 @@ std::vector<bool> omc_cells(const TargetCells& cells, std::uint32_t width, std::
             const double l = parts.luminance(parts.rest, p);
             variance[c].add(l, parts.rest_y2[p], parts.count[p]);
             lum[c] += l;
-            const double tau = chain_correlation(means[p], b, area[p], steps.large);
-            (tau > 1 ? stuck[c] : free[c]) += l * tau;
+            stuck[c] += l * excess[p];
             behind[c] += parts.behind[p];
             samples[c] += double(parts.count[p]);
             pixels[c] += 1;
@@ -143,23 +161,15 @@ std::vector<bool> omc_cells(const TargetCells& cells, std::uint32_t width, std::
         if (!(lum[c] > 0)) continue; // no light found: the chains'
         // Sums over the cell's paths to light, as L_c = P_c b_c.
         const double per_path = pixels[c] / samples[c];
-        const Candidate cand{c,
-                             lum[c] * per_path,
-                             pixels[c],
-                             variance[c].value(),
-                             free[c] * per_path,
+        const Candidate cand{c, lum[c] * per_path, pixels[c], variance[c].value(),
                              stuck[c] * per_path};
         film.light += cand.light;
-        film.free += cand.free;
         film.stuck += cand.stuck;
         if (behind_share(behind[c] / samples[c], lum[c] / samples[c]) > kChainsPayBehindShare)
             continue;
         open.push_back(cand);
     }
-    // K's terms take the chains' light L as a factor (ChainsError).
-    for (Candidate& c : open)
-        c.stuck *= film.light;
-    film.stuck *= film.light;
+    film.light_0 = film.light;
     std::vector<bool> whole(n, false);
     for (std::uint32_t c : choose(std::move(open), film))
         whole[c] = true;

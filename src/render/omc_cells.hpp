@@ -56,6 +56,21 @@ struct ChainSteps {
 // or light.
 double chain_correlation(double mean, double b, double area, double large_step);
 
+// Per pixel of a width x height film, the chains' excess correlation where
+// they would stay (chain_correlation less 1), kept only where another pixel
+// within kLoneReach has some too. At a burn-in sample or two per pixel
+// (512x512) a single sample far brighter than b reads as such a pixel; such
+// samples are as likely in any cell of their kind of light, and the cells'
+// rule, which picks the largest terms, picked the cells where the burn-in
+// happened to find one (on ajar, for the slit's). A small light's image
+// lights pixels beside it too, even where, at a sample per pixel, every
+// other one misses it. Of the 24 others in reach, ajar's single bright
+// samples (0.4% of its pixels at 512x512) find one by chance about one
+// time in ten.
+constexpr std::uint32_t kLoneReach = 2;
+std::vector<double> without_lone_pixels(std::vector<double> excess, std::uint32_t width,
+                                        std::uint32_t height);
+
 // Per pixel of a width x height film of mean luminances `means`: the area,
 // in pixels, of light like its own within `reach` pixels of it: 1 + (W - 1)
 // min(1, n / m), where the W - 1 other pixels in reach have the mean n and
