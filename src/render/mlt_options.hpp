@@ -79,9 +79,10 @@ struct MltOptions {
     std::uint32_t stuck_run = kDefaultStuckRun;
     // What the chains render (src/render/split.hpp): with a split, the OMC
     // part is rendered by per-pixel samples beside them, omc_effort times
-    // the time the rule of split.hpp gives it, and by the burn-in's paths.
+    // the time the rule of split.hpp gives it (kDefaultOmcEffort), and by
+    // the burn-in's paths.
     Split split = kDefaultSplit;
-    double omc_effort = 1.0;
+    double omc_effort = kDefaultOmcEffort;
     // With a split, the cells whose MLT part path tracing renders well go
     // to the OMC part whole (src/render/omc_cells.hpp).
     bool omc_cells = kDefaultOmcCells;

@@ -80,6 +80,11 @@ struct SplitCosts {
     double cell_pixels = 0;   // P_c
     double cell_rays = 0;     // c_c
 };
+// --omc-effort's default: half the rule's OMC time did better than the rule
+// on the five scenes measured at 128x128 and the three at 512x512, by
+// blocks, and by MSE but for ajar at 512x512, level (doc/RESULTS.md, "The
+// OMC part's share of time, by --omc-effort").
+constexpr double kDefaultOmcEffort = 0.5;
 constexpr double kChainCorrelation = 8.0;     // tau
 constexpr double kOmcMaxTimeRatio = 1.0;      // the OMC part takes at most the chains' time
 constexpr double kOmcMinTimeRatio = 1.0 / 16; // and at least a 16th of it
