@@ -299,3 +299,21 @@ TEST(SmallStep, FilmStepIsAFilmsSixtyFourthOrTheAskedPixels) {
     // 2 pixels on 512: less than one stretch (8 pixels); one it is.
     EXPECT_EQ(film_stretch(2, grids), (std::vector<cl_uint>{1, 1, 1, 1, 1, 1, 8, 8}));
 }
+
+// The host's largest film step on the whole film (the reach of the OMC
+// part's cells, src/render/omc_cells.hpp) is the kernels' stretch in pixels,
+// n x stretch / 64 rounded: auto is 4 pixels at 128 (stretch 2), a 64th of
+// 512 (8), and 5 at 160 (stretch 2 of 2.5 pixels); film is 2 at 128; 8
+// pixels asked are 8 at 128 and 160 (stretch 4 and 3).
+TEST(SmallStep, HostFilmStepIsTheKernelsStretchInPixels) {
+    MltOptions opt = test::plain_mlt();
+    opt.film_step = kFilmStepAuto;
+    EXPECT_EQ(film_step_pixels(opt, 128), 4u);
+    EXPECT_EQ(film_step_pixels(opt, 512), 8u);
+    EXPECT_EQ(film_step_pixels(opt, 160), 5u);
+    opt.film_step = 0;
+    EXPECT_EQ(film_step_pixels(opt, 128), 2u);
+    opt.film_step = 8;
+    EXPECT_EQ(film_step_pixels(opt, 128), 8u);
+    EXPECT_EQ(film_step_pixels(opt, 160), 8u);
+}

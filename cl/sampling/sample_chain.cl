@@ -86,30 +86,14 @@ inline uint smp_small_delta(uint r, uint bits) {
     return max((uint)((p + (1ul << (shift - 1u))) >> shift), 1u);
 }
 
-/* The stretch that makes the largest small step of a number on an axis of n
- * pixels about `pixels` pixels: pixels x 64 / n, rounded. */
-inline uint smp_pixels_stretch(uint pixels, uint n) {
-    return (pixels * 64u + n / 2u) / n;
-}
-
 /* How many times longer a film number's small step is than another
- * number's, whose largest is 2^-6 of its unit square (the tile's n pixels
- * along the axis). With MLT_FILM_STEP: about MLT_FILM_STEP pixels (at least
- * a stretch of one). Otherwise the film over the tile, rounded (1 on the
- * whole film), so that a step moves as many pixels in a tile as on the film,
- * at most a 64th of the film; with MLT_FILM_STEP_FLOOR, at least about that
- * many pixels. */
+ * number's (cl/core/film_step.h), in the chain's tile: MLT_FILM_STEP pixels
+ * asked for, or the film over the tile with a floor of MLT_FILM_STEP_FLOOR
+ * pixels (0: none). */
 inline uint smp_film_stretch(const SampleSource* s, uint dim) {
     uint n = dim ? s->tile.h : s->tile.w;
-#ifdef MLT_FILM_STEP
-    return max(smp_pixels_stretch(MLT_FILM_STEP, n), 1u);
-#else
-    uint stretch = (uint)(1.0f / (dim ? s->tile.sy : s->tile.sx) + 0.5f);
-#ifdef MLT_FILM_STEP_FLOOR
-    stretch = max(stretch, smp_pixels_stretch(MLT_FILM_STEP_FLOOR, n));
-#endif
-    return stretch;
-#endif
+    uint film_over_tile = (uint)(1.0f / (dim ? s->tile.sy : s->tile.sx) + 0.5f);
+    return film_step_stretch(n, film_over_tile, MLT_FILM_STEP, MLT_FILM_STEP_FLOOR);
 }
 
 #ifndef PSS_FLOAT32

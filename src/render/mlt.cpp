@@ -25,10 +25,8 @@ std::string program_defines(const DeviceScene& ds, const MltOptions& opt,
     if (opt.split != Split::None || opt.target == Target::TwoStage)
         d += "#define MLT_BURN_IN_SAMPLES 1\n";
     if (opt.film_atomics64) d += "#define FILM_ATOMICS64 1\n";
-    if (opt.film_step == kFilmStepAuto)
-        d += "#define MLT_FILM_STEP_FLOOR " + std::to_string(kFilmStepFloorPixels) + "u\n";
-    else if (opt.film_step)
-        d += "#define MLT_FILM_STEP " + std::to_string(opt.film_step) + "u\n";
+    d += "#define MLT_FILM_STEP " + std::to_string(film_step_asked(opt)) + "u\n";
+    d += "#define MLT_FILM_STEP_FLOOR " + std::to_string(film_step_floor(opt)) + "u\n";
     return d + split_defines(opt.split);
 }
 

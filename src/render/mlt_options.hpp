@@ -7,6 +7,8 @@
 #include "render/split.hpp"
 #include "render/target.hpp"
 
+#include "film_step.h"
+
 #include <algorithm>
 #include <cstdint>
 #include <optional>
@@ -117,12 +119,21 @@ inline float large_step_of(const MltOptions& opt) {
     return opt.large_step.value_or(default_large_step(opt.burn_in, opt.kelemen));
 }
 
-// The largest move of a small step on the film, in pixels across a film
-// `width` pixels wide (--film-step; cl/sampling/sample_chain.cl).
+// --film-step's pixels asked for (0: the film's 64th, with the floor of
+// film_step_floor) and floor (0: none), the kernels' MLT_FILM_STEP and
+// MLT_FILM_STEP_FLOOR (cl/core/film_step.h).
+inline std::uint32_t film_step_asked(const MltOptions& opt) {
+    return opt.film_step == kFilmStepAuto ? 0 : opt.film_step;
+}
+inline std::uint32_t film_step_floor(const MltOptions& opt) {
+    return opt.film_step == kFilmStepAuto ? kFilmStepFloorPixels : 0;
+}
+
+// The largest small step on a film `width` pixels wide, in pixels, of a
+// chain on the whole film.
 inline std::uint32_t film_step_pixels(const MltOptions& opt, std::uint32_t width) {
-    const std::uint32_t kelemen = std::max((width + 32) / 64, 1u);
-    if (opt.film_step == kFilmStepAuto) return std::max(kelemen, kFilmStepFloorPixels);
-    return opt.film_step ? opt.film_step : kelemen;
+    return film_step_pixels_of(
+        width, film_step_stretch(width, 1, film_step_asked(opt), film_step_floor(opt)));
 }
 
 // Kelemen's weights in force: asked for, with large steps to weigh.

@@ -20,6 +20,7 @@ const Row kTable[] = {
     {Stage::Core,     "cl/core/fixed_point.h",             true,  true},
     {Stage::Core,     "cl/core/burnin_order.h",            true,  true},
     {Stage::Core,     "cl/core/target_cells.h",            true,  true},
+    {Stage::Core,     "cl/core/film_step.h",               false, true},
     {Stage::Geometry, "cl/geometry/geometry.cl",           true,  true},
     {Stage::Geometry, "cl/geometry/bvh.cl",                true,  true},
     {Stage::Geometry, "cl/geometry/camera.cl",             true,  true},
