@@ -210,6 +210,14 @@ typedef struct {
  * a step's weight (at most K <= 64) never overflows 32 bits. */
 #define MLT_STAY_FLUSH 0x80000000u
 
+/* Modes of the kernel mlt_owed (cl/kernels/mlt.cl), which splats what each
+ * chain owes the film: ADD adds it and UNDO subtracts it again, exactly, so
+ * that the host's read between the two changes nothing; FLUSH adds it and
+ * clears the chain's weight, so that a pass ends with nothing owed. */
+#define MLT_OWED_ADD 0u
+#define MLT_OWED_UNDO 1u
+#define MLT_OWED_FLUSH 2u
+
 #define CHAIN_BOUNCES_MASK 0xFFu
 #define CHAIN_STUCK_BIT 0x100u
 #define CHAIN_RUN_SHIFT 9

@@ -132,14 +132,9 @@ __kernel void mlt_step(SCENE_ARGS, __global const float* weight, const TargetCel
 }
 
 /* What each chain owes the film: its gathered stay weight at its state's
- * pixel, rounded with the numbers of (seed, chain, iteration). mode
- * MLT_OWED_ADD adds it and MLT_OWED_UNDO subtracts it again, exactly: the
- * host reads the film between the two, so reading an image changes
- * nothing. MLT_OWED_FLUSH adds it and clears the chain's weight: the pass
- * ends with nothing owed (src/render/mlt_film.hpp). */
-#define MLT_OWED_ADD 0u
-#define MLT_OWED_UNDO 1u
-#define MLT_OWED_FLUSH 2u
+ * pixel, rounded with the numbers of (seed, chain, iteration), added,
+ * subtracted or flushed by `mode` (MLT_OWED_*, cl/core/shared_types.h;
+ * src/render/mlt_film.hpp). */
 __kernel void mlt_owed(const Frame frame, __global const float* weight, const TargetCells cells,
                        STRATA_ARGS, __global const uint* state, __global ChainValue* values,
                        const uint num_chains, const ulong seed, const uint iteration, FILM_ARGS,

@@ -180,7 +180,7 @@ class MltRenderer : public Integrator {
     void tile_counts(MltTally& t) const;
     // B per tile from a tally's sums (mlt_tile_b).
     std::vector<double> tile_b_of(const MltTally& t) const;
-    // Runs mlt_owed in `mode` (MLT_OWED_* of cl/kernels/mlt.cl).
+    // Runs mlt_owed in `mode` (MLT_OWED_*, cl/core/shared_types.h).
     void owed(std::uint32_t mode) const;
     BEstimate b_estimate(const MltStats& s) const;
     bool prepared_ = false;
