@@ -8,8 +8,6 @@
 #include "render/ranks.hpp"
 
 #include <algorithm>
-#include <cmath>
-#include <cstdio>
 #include <numeric>
 
 namespace smallmlt {
