@@ -282,7 +282,8 @@ std::vector<cl_uint> film_stretch(std::uint32_t film_step, const std::vector<Str
 // stretch, so stretch * n / 64 pixels in a tile of n pixels. With --film-step
 // film it is a 64th of the film, in a tile as on the whole film; with
 // PIXELS, the step asked for, rounded to a multiple of n / 64 (at least
-// one); with auto (the default), the larger of the two for 4 pixels. Grids:
+// one); with auto (the default), the larger of twice film's and the
+// stretch for 4 pixels. Grids:
 // whole films of 128x128, 512x512 and 160x90, and the first tile of 16
 // pixels of a 128x128 film.
 TEST(SmallStep, FilmStepIsAFilmsSixtyFourthOrTheAskedPixels) {
@@ -290,9 +291,9 @@ TEST(SmallStep, FilmStepIsAFilmsSixtyFourthOrTheAskedPixels) {
                                            strata_grid(160, 90, 0), strata_grid(128, 128, 16)};
     EXPECT_EQ(film_stretch(0, grids), (std::vector<cl_uint>{1, 1, 1, 1, 1, 1, 8, 8}));
     // auto: 4 pixels is 4 * 64 / n rounded, 2 on 128 and 2.1 and 3.3 on
-    // 160x90; on 512 less than a 64th of the film, which stays; in a tile of
-    // 16 of a 128 film, 16 against the film's 8.
-    EXPECT_EQ(film_stretch(kFilmStepAuto, grids), (std::vector<cl_uint>{2, 2, 1, 1, 2, 3, 16, 16}));
+    // 160x90; on 512 less than a 32nd of the film (stretch 2), which stays;
+    // in a tile of 16 of a 128 film, 16 (a 32nd of the film's 8 tiles).
+    EXPECT_EQ(film_stretch(kFilmStepAuto, grids), (std::vector<cl_uint>{2, 2, 2, 2, 2, 3, 16, 16}));
     // 8 pixels: 8 * 64 / n, rounded: 4 on 128, 1 on 512, 3.2 and 5.7 on
     // 160x90, 32 in a tile of 16.
     EXPECT_EQ(film_stretch(8, grids), (std::vector<cl_uint>{4, 4, 1, 1, 3, 6, 32, 32}));
@@ -302,17 +303,18 @@ TEST(SmallStep, FilmStepIsAFilmsSixtyFourthOrTheAskedPixels) {
 
 // The host's largest film step on the whole film (the reach of the OMC
 // part's cells, src/render/omc_cells.hpp) is the kernels' stretch in pixels,
-// n x stretch / 64 rounded: auto is 4 pixels at 128 (stretch 2), a 64th of
-// 512 (8), and 5 at 160 (stretch 2 of 2.5 pixels); film is 2 at 128; 8
-// pixels asked are 8 at 128 and 160 (stretch 4 and 3).
+// n x stretch / 64 rounded: auto is 4 pixels at 128 (stretch 2), a 32nd of
+// 512 (16), and 5 at 160 (stretch 2 of 2.5 pixels); film is 2 at 128 and 8
+// at 512; 8 pixels asked are 8 at 128 and 160 (stretch 4 and 3).
 TEST(SmallStep, HostFilmStepIsTheKernelsStretchInPixels) {
     MltOptions opt = test::plain_mlt();
     opt.film_step = kFilmStepAuto;
     EXPECT_EQ(film_step_pixels(opt, 128), 4u);
-    EXPECT_EQ(film_step_pixels(opt, 512), 8u);
+    EXPECT_EQ(film_step_pixels(opt, 512), 16u);
     EXPECT_EQ(film_step_pixels(opt, 160), 5u);
     opt.film_step = 0;
     EXPECT_EQ(film_step_pixels(opt, 128), 2u);
+    EXPECT_EQ(film_step_pixels(opt, 512), 8u);
     opt.film_step = 8;
     EXPECT_EQ(film_step_pixels(opt, 128), 8u);
     EXPECT_EQ(film_step_pixels(opt, 160), 8u);

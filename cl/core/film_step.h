@@ -18,17 +18,19 @@ inline u32 film_step_pixels_stretch(u32 pixels, u32 n) {
 
 /* The stretch in a tile of n pixels along the axis, `film_over_tile` times
  * narrower than the film (1 on the whole film). `step` pixels asked for
- * (--film-step PIXELS), at least a stretch of one; with `step` 0, the film
- * over the tile, so that a step moves as many pixels in a tile as on the
- * film, a 64th of the film, and at least about `floor` pixels (--film-step
- * auto; 0: no floor, --film-step film). */
-inline u32 film_step_stretch(u32 n, u32 film_over_tile, u32 step, u32 floor) {
+ * (--film-step PIXELS), at least a stretch of one; with `step` 0, `share`
+ * times the film over the tile, so that a step moves as many pixels in a
+ * tile as on the film, `share` 64ths of the film, and at least about
+ * `floor` pixels (--film-step auto: share 2, floor 4; --film-step film:
+ * share 1, floor 0). */
+inline u32 film_step_stretch(u32 n, u32 film_over_tile, u32 step, u32 share, u32 floor) {
     if (step) {
         u32 asked = film_step_pixels_stretch(step, n);
         return asked > 1u ? asked : 1u;
     }
     u32 floored = film_step_pixels_stretch(floor, n);
-    return floored > film_over_tile ? floored : film_over_tile;
+    u32 shared = share * film_over_tile;
+    return floored > shared ? floored : shared;
 }
 
 /* The largest step in pixels of `stretch` on n pixels: n x stretch / 64,

@@ -88,12 +88,13 @@ inline uint smp_small_delta(uint r, uint bits) {
 
 /* How many times longer a film number's small step is than another
  * number's (cl/core/film_step.h), in the chain's tile: MLT_FILM_STEP pixels
- * asked for, or the film over the tile with a floor of MLT_FILM_STEP_FLOOR
- * pixels (0: none). */
+ * asked for, or MLT_FILM_STEP_SHARE times the film over the tile with a
+ * floor of MLT_FILM_STEP_FLOOR pixels (0: none). */
 inline uint smp_film_stretch(const SampleSource* s, uint dim) {
     uint n = dim ? s->tile.h : s->tile.w;
     uint film_over_tile = (uint)(1.0f / (dim ? s->tile.sy : s->tile.sx) + 0.5f);
-    return film_step_stretch(n, film_over_tile, MLT_FILM_STEP, MLT_FILM_STEP_FLOOR);
+    return film_step_stretch(n, film_over_tile, MLT_FILM_STEP, MLT_FILM_STEP_SHARE,
+                             MLT_FILM_STEP_FLOOR);
 }
 
 #ifndef PSS_FLOAT32

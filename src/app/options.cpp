@@ -241,7 +241,8 @@ const std::vector<Flag> kMltFlags = {
      },
      "the largest small step of a chain's film position: PIXELS ({range}; at least a 64th "
      "of its tile); film: a 64th of the film's width and height, Kelemen's step, in a tile "
-     "of --strata as on the film; auto: the larger of film and 4 pixels (default {default}; "
+     "of --strata as on the film; auto: the larger of twice that, a 32nd of the film, and 4 "
+     "pixels (default {default}; "
      "doc/design.md, \"Small steps on the film\")",
      1, 16384, nullptr,
      [] {

@@ -24,6 +24,7 @@ std::string program_defines(const DeviceScene& ds, const MltOptions& opt,
         d += "#define MLT_BURN_IN_SAMPLES 1\n";
     if (opt.film_atomics64) d += "#define FILM_ATOMICS64 1\n";
     d += "#define MLT_FILM_STEP " + std::to_string(film_step_asked(opt)) + "u\n";
+    d += "#define MLT_FILM_STEP_SHARE " + std::to_string(film_step_share(opt)) + "u\n";
     d += "#define MLT_FILM_STEP_FLOOR " + std::to_string(film_step_floor(opt)) + "u\n";
     return d + split_defines(opt.split);
 }

@@ -25,8 +25,10 @@ constexpr float kDefaultLargeStepKelemen = 0.3f;  // with burn-in and Kelemen's 
 constexpr float kDefaultLargeStepBurnIn = 0.1f;   // with burn-in and expected values
 constexpr float kDefaultLargeStepNoBurnIn = 0.5f; // the paper's baseline without
 // --film-step: 0 is Kelemen's step, a 64th of the film; auto is the larger of
-// that and kFilmStepFloorPixels (doc/design.md, "Small steps on the film").
+// kFilmStepAutoShare 64ths of the film and kFilmStepFloorPixels (doc/design.md,
+// "Small steps on the film"; a 32nd: doc/RESULTS.md, "A 32nd of the film").
 constexpr std::uint32_t kFilmStepAuto = 0xFFFFFFFFu;
+constexpr std::uint32_t kFilmStepAutoShare = 2;
 constexpr std::uint32_t kFilmStepFloorPixels = 4;
 constexpr std::uint32_t kDefaultFilmStep = kFilmStepAuto;
 
@@ -119,11 +121,15 @@ inline float large_step_of(const MltOptions& opt) {
     return opt.large_step.value_or(default_large_step(opt.burn_in, opt.kelemen));
 }
 
-// --film-step's pixels asked for (0: the film's 64th, with the floor of
-// film_step_floor) and floor (0: none), the kernels' MLT_FILM_STEP and
-// MLT_FILM_STEP_FLOOR (cl/core/film_step.h).
+// --film-step's pixels asked for (0: film_step_share 64ths of the film, with
+// the floor of film_step_floor), share and floor (0: none), the kernels'
+// MLT_FILM_STEP, MLT_FILM_STEP_SHARE and MLT_FILM_STEP_FLOOR
+// (cl/core/film_step.h).
 inline std::uint32_t film_step_asked(const MltOptions& opt) {
     return opt.film_step == kFilmStepAuto ? 0 : opt.film_step;
+}
+inline std::uint32_t film_step_share(const MltOptions& opt) {
+    return opt.film_step == kFilmStepAuto ? kFilmStepAutoShare : 1;
 }
 inline std::uint32_t film_step_floor(const MltOptions& opt) {
     return opt.film_step == kFilmStepAuto ? kFilmStepFloorPixels : 0;
@@ -132,8 +138,9 @@ inline std::uint32_t film_step_floor(const MltOptions& opt) {
 // The largest small step on a film `width` pixels wide, in pixels, of a
 // chain on the whole film.
 inline std::uint32_t film_step_pixels(const MltOptions& opt, std::uint32_t width) {
-    return film_step_pixels_of(
-        width, film_step_stretch(width, 1, film_step_asked(opt), film_step_floor(opt)));
+    return film_step_pixels_of(width,
+                               film_step_stretch(width, 1, film_step_asked(opt),
+                                                 film_step_share(opt), film_step_floor(opt)));
 }
 
 // Kelemen's weights in force: asked for, with large steps to weigh.
