@@ -14,8 +14,10 @@
 # Writes bench/results/error_time/. Usage: bench/error_time.sh [BIN]
 # Settings (environment): SCENES, SIZES, SECONDS, SEEDS, LOG_EVERY, THREADS,
 # METHODS (those of flags() below: -eF is --omc-effort F, -pP --large-step P,
-# mlt-strataN --strata N, mlt-fsN --film-step N (mlt-fsfilm: film), mlt-rN --restart N), REF_SECONDS and REF_SECONDS_FILM (the references'
-# time at N x N and at the scene's film; bench/reference.sh);
+# mlt-strataN --strata N, mlt-fsN --film-step N (mlt-fsfilm: film),
+# mlt-psN --path-step N, mlt-rN --restart N), REF_SECONDS and
+# REF_SECONDS_FILM (the references' time at N x N and at the scene's film;
+# bench/reference.sh);
 # PLOT_ONLY=1 redraws the charts and the table from the last run's CSVs.
 set -eu
 BIN=${1:-build/smallmlt}
@@ -45,6 +47,7 @@ flags() {
     mlt-strata) echo "--method mlt --strata auto --threads $THREADS" ;;
     mlt-strata*) echo "--method mlt --strata ${1#mlt-strata} --threads $THREADS" ;;
     mlt-fs*) echo "--method mlt --film-step ${1#mlt-fs} --threads $THREADS" ;;
+    mlt-ps*) echo "--method mlt --path-step ${1#mlt-ps} --threads $THREADS" ;;
     mlt-r*) echo "--method mlt --restart ${1#mlt-r} --threads $THREADS" ;;
     mlt-k2) echo "--method mlt --proposals 2 --threads $THREADS" ;;
     mlt-k4) echo "--method mlt --proposals 4 --threads $THREADS" ;;
@@ -95,7 +98,8 @@ for size in $SIZES; do
         "mlt-strata=MLT, split auto, strata auto" "mlt-strata8=MLT, split auto, strata of 8" \
         "mlt-strata32=MLT, split auto, strata of 32" \
         "mlt-fsfilm=MLT, film steps of a 64th of the film" "mlt-fs4=MLT, film steps of 4 pixels" "mlt-fs8=MLT, film steps of 8 pixels" \
-        "mlt-fs16=MLT, film steps of 16 pixels" "mlt-r8=MLT, restarts every 8 steps" \
+        "mlt-fs16=MLT, film steps of 16 pixels" "mlt-ps64=MLT, path steps of a 64th, as Kelemen" \
+        "mlt-r8=MLT, restarts every 8 steps" \
         "mlt-r16=MLT, restarts every 16 steps" \
         "mlt-r32=MLT, restarts every 32 steps"
     # the lower middle of the film at full size (cornell-water's floor under

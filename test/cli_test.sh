@@ -45,6 +45,12 @@ check render_mlt 0 "mlt: " -- "$BIN" render scenes/cornell.scene --width 8 --hei
 check mlt_default 0 "mlt: " -- "$BIN" render scenes/cornell.scene --width 8 --height 8 --spp 1 --threads 64 --out "$DIR/default.png"
 check burn_in_bad 2 "--burn-in: 'mcmc' is not a burn-in" -- "$BIN" render scenes/cornell.scene --burn-in mcmc
 check burn_in_iters_zero 2 "--burn-in-iters: 0 is out of range" -- "$BIN" render scenes/cornell.scene --burn-in-iters 0
+# One method's flags with the other: a warning each, and the render.
+check pt_mlt_flags 0 "smallmlt: warning: --path-step changes nothing with --method pt (ignored)" -- "$BIN" render scenes/cornell.scene --method pt --path-step 64 --film-step 8 --width 8 --height 8 --spp 1 --quiet --out "$DIR/ptflags.pfm"
+check pt_mlt_flags_each 0 "smallmlt: warning: --film-step changes nothing with --method pt (ignored)" -- "$BIN" render scenes/cornell.scene --film-step 8 --method pt --width 8 --height 8 --spp 1 --quiet --out "$DIR/ptflags.pfm"
+check mlt_pt_flags 0 "smallmlt: warning: --sampler changes nothing with --method mlt (ignored)" -- "$BIN" render scenes/cornell.scene --sampler random --width 8 --height 8 --spp 1 --threads 64 --quiet --out "$DIR/mltflags.pfm"
+check path_step_range 2 "--path-step: 8 is out of range 16..1024" -- "$BIN" render scenes/cornell.scene --path-step 8
+check path_step_power 2 "--path-step: 100 is not a power of two" -- "$BIN" render scenes/cornell.scene --path-step 100
 # A lamp above a grey triangle, emitting upwards into nothing: the scene is
 # lit in principle and black in fact; and the same without the lamp.
 printf 'newmtl grey\nKd 0.5 0.5 0.5\nnewmtl lamp\nKe 5 5 5\n' > "$DIR/dark.mtl"

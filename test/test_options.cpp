@@ -77,6 +77,7 @@ TEST(Options, EmptyCommandLineGivesTheLibraryDefaults) {
     EXPECT_EQ(m.kelemen, lib.kelemen);
     EXPECT_EQ(m.strata, lib.strata);
     EXPECT_EQ(m.film_step, lib.film_step);
+    EXPECT_EQ(m.path_step, lib.path_step);
     EXPECT_EQ(m.restart, lib.restart);
     EXPECT_FALSE(o.threads) << "--threads auto";
     // Path tracing: PathTracer's default sampler, and the roulette of Scene.
@@ -218,6 +219,9 @@ TEST(Options, ChoicesSetTheirFields) {
     EXPECT_TRUE(parse("render s.scene --weights kelemen").render.mlt.kelemen);
     EXPECT_FALSE(parse("render s.scene --burn-in none").render.mlt.burn_in);
     EXPECT_EQ(parse("render s.scene --restart 32").render.mlt.restart, 32u);
+    EXPECT_EQ(parse("render s.scene --path-step 64").render.mlt.path_step, 64u);
+    EXPECT_EQ(usage_error("render s.scene --path-step 100"),
+              "--path-step: 100 is not a power of two");
     EXPECT_TRUE(parse("render s.scene --burn-in omc").render.mlt.burn_in);
     EXPECT_TRUE(parse("render s.scene --film-atomics 64").render.mlt.film_atomics64);
     EXPECT_FALSE(parse("render s.scene --film-atomics 32").render.mlt.film_atomics64);
@@ -231,6 +235,22 @@ TEST(Options, ChoicesSetTheirFields) {
               "--weights: 'veach' is not a weighting (expected or kelemen)");
     EXPECT_EQ(usage_error("budget s.scene --format xml"),
               "--format: 'xml' is not a format (table, csv or json)");
+}
+
+// A flag of the other method's section is a warning, whatever the order:
+// MLT's with PT, PT's with MLT; the method's own flags are none.
+TEST(Options, OtherMethodsFlagsWarn) {
+    EXPECT_EQ(parse("render s.scene --film-step 8 --path-step 64 --sampler sobol --method pt")
+                  .render.warnings,
+              (std::vector<std::string>{
+                  "warning: --film-step changes nothing with --method pt (ignored)",
+                  "warning: --path-step changes nothing with --method pt (ignored)"}));
+    EXPECT_EQ(
+        parse("render s.scene --sampler random --film-step 8").render.warnings,
+        std::vector<std::string>{"warning: --sampler changes nothing with --method mlt (ignored)"});
+    EXPECT_TRUE(
+        parse("render s.scene --method pt --sampler random --spp 2").render.warnings.empty());
+    EXPECT_TRUE(parse("render s.scene --path-step 64 --threads 64").render.warnings.empty());
 }
 
 // A missing or bad value is a UsageError that starts with the flag's name.

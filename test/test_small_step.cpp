@@ -12,6 +12,7 @@
 #include <cmath>
 #include <cstring>
 #include <random>
+#include <utility>
 
 using namespace smallmlt;
 
@@ -29,17 +30,18 @@ SceneFeatures features(std::uint32_t lights) {
     return f;
 }
 
-// Exact small step in grid steps of a `bits`-wide slot: 2^(bits - 6 - 4u),
-// u = (r & 0x7FFFFFFF) / 2^31.
-double reference_delta(std::uint32_t r, int bits) {
+// Exact small step in grid steps of a `bits`-wide slot at `scale`:
+// 2^(bits - scale - 4u), u = (r & 0x7FFFFFFF) / 2^31.
+double reference_delta(std::uint32_t r, int bits, int scale) {
     double u = double(r & 0x7FFFFFFFu) / 2147483648.0;
-    return std::ldexp(std::exp2(-4.0 * u), bits - 6);
+    return std::ldexp(std::exp2(-4.0 * u), bits - scale);
 }
 
 } // namespace
 
 // Over 2^20 random stream numbers (and the ends of the range), for each slot
-// width: the step is within one grid step of the exact exponential, at least
+// width at Kelemen's scale (largest step 2^-6) and at the ends of --path-step's
+// range (2^-4 and 2^-10): the step is within one grid step of the exact exponential, at least
 // one step, its size does not depend on the sign bit, and the move with the
 // sign bit flipped is the mirror image (v + d and v - d, modulo 2^bits).
 TEST(SmallStep, IntegerDeltaFollowsTheExponentialAndIsSymmetric) {
@@ -64,14 +66,15 @@ TEST(SmallStep, IntegerDeltaFollowsTheExponentialAndIsSymmetric) {
     }
     ClBuffer rb(test::cl(), CL_MEM_READ_ONLY, r.size() * 4, r.data());
     ClBuffer out(test::cl(), CL_MEM_WRITE_ONLY, r.size() * 4);
-    for (int bits : {24, 16, 17}) {
+    const std::pair<int, int> widths[] = {{24, 6}, {16, 6}, {17, 6}, {24, 4}, {24, 10}, {16, 10}};
+    for (auto [bits, scale] : widths) {
         const std::uint32_t mask = (1u << bits) - 1u;
         std::vector<cl_uint> vb(v.size());
         for (std::size_t i = 0; i < v.size(); ++i)
             vb[i] = v[i] & mask;
         ClBuffer vbuf(test::cl(), CL_MEM_READ_ONLY, vb.size() * 4, vb.data());
         ClKernel k(MltInspect::program(mlt), "probe_small_step");
-        k.set_args(rb, vbuf, cl_uint(bits), cl_uint(r.size()), out);
+        k.set_args(rb, vbuf, cl_uint(bits), cl_uint(scale), cl_uint(r.size()), out);
         k.run(test::cl(), r.size());
         std::vector<cl_uint> moved(r.size());
         out.read(test::cl(), moved.data());
@@ -82,18 +85,19 @@ TEST(SmallStep, IntegerDeltaFollowsTheExponentialAndIsSymmetric) {
             std::uint32_t d_down = (vb[down] - moved[down]) & mask;
             ASSERT_EQ(d_up, d_down) << "bits " << bits << " r " << r[a];
             ASSERT_GE(d_up, 1u);
-            double err = std::abs(double(d_up) - reference_delta(r[a], bits));
+            double exact = reference_delta(r[a], bits, scale);
+            double err = std::abs(double(d_up) - exact);
             worst = std::max(worst, err);
-            ASSERT_LE(err, 1.0) << "bits " << bits << " r " << r[a] << ": step " << d_up
-                                << ", exact " << reference_delta(r[a], bits);
+            ASSERT_LE(err, 1.0) << "bits " << bits << " scale " << scale << " r " << r[a]
+                                << ": step " << d_up << ", exact " << exact;
             lo = std::min(lo, double(d_up));
             hi = std::max(hi, double(d_up));
         }
-        std::printf("bits %d: steps %g..%g grid steps, largest distance from the exact "
-                    "exponential %.3f steps\n",
-                    bits, lo, hi, worst);
-        EXPECT_EQ(lo, std::ldexp(1.0, bits - 10));
-        EXPECT_EQ(hi, std::ldexp(1.0, bits - 6));
+        std::printf("bits %d, scale %d: steps %g..%g grid steps, largest distance from the "
+                    "exact exponential %.3f steps\n",
+                    bits, scale, lo, hi, worst);
+        EXPECT_EQ(lo, std::ldexp(1.0, bits - scale - 4));
+        EXPECT_EQ(hi, std::ldexp(1.0, bits - scale));
     }
 }
 
@@ -104,12 +108,12 @@ namespace {
 struct CommitRun {
     SampleLayout layout;
     std::uint32_t chains = 4096, dims = 0;
-    std::vector<cl_uint> before, after; // the state's words
-    std::vector<cl_uint> lazy, stored;  // number d of chain c at c * dims + d
+    std::vector<cl_uint> before, after;       // the state's words
+    std::vector<cl_uint> prior, lazy, stored; // number d of chain c at c * dims + d
     std::uint32_t committed(std::uint32_t c) const { return (3 * c) % (layout.depth + 1); }
 };
 
-CommitRun run_commit(std::uint32_t lights) {
+CommitRun run_commit(std::uint32_t lights, std::uint32_t path_step = kDefaultPathStep) {
     CommitRun run;
     DeviceScene ds = test::layout_only_scene(features(lights));
     run.layout = ds.layout;
@@ -117,6 +121,7 @@ CommitRun run_commit(std::uint32_t lights) {
     MltOptions opt = test::plain_mlt();
     MltTestHooks hooks;
     opt.threads = run.chains;
+    opt.path_step = path_step;
     hooks.extra_files = {kProbeFile};
     MltRenderer mlt(test::cl(), ds, opt, hooks);
     run.before.resize(MltInspect::state(mlt).bytes() / 4);
@@ -125,12 +130,15 @@ CommitRun run_commit(std::uint32_t lights) {
         w = rng();
     MltInspect::state(mlt).write(test::cl(), run.before.data());
     std::size_t numbers = std::size_t(run.chains) * run.dims;
+    ClBuffer prior(test::cl(), CL_MEM_WRITE_ONLY, numbers * 4);
     ClBuffer lazy(test::cl(), CL_MEM_WRITE_ONLY, numbers * 4);
     ClBuffer stored(test::cl(), CL_MEM_WRITE_ONLY, numbers * 4);
     ClKernel k(MltInspect::program(mlt), "probe_commit_agrees");
     k.set_args(MltInspect::state(mlt), cl_uint(run.chains), cl_uint(ds.layout.depth), cl_ulong(7),
-               lazy, stored);
+               prior, lazy, stored);
     k.run(test::cl(), run.chains);
+    run.prior.resize(numbers);
+    prior.read(test::cl(), run.prior.data());
     run.lazy.resize(numbers);
     run.stored.resize(numbers);
     run.after.resize(run.before.size());
@@ -178,6 +186,53 @@ TEST(SmallStep, CommitWritesWholeWordsUpToTheLastCommittedNumber) {
                 << "chain " << c << ": word " << w << " after the committed numbers changed";
     }
     EXPECT_GT(partial, int(run.chains) / 2);
+}
+
+// --path-step N reaches the path's numbers and only them: over the small
+// steps of chains with live bounces, a path number moves at most 1/N of its
+// unit interval (and one grid step of rounding), at least 1/(16 N) (less
+// one), and the largest moves come within 5% of 1/N (a step's chance to
+// exceed 0.95/N is 1.8%, over some 10^4 moves per N). The film numbers, on a
+// 64x64 film (probe_commit_agrees), keep their step of 4 pixels: a 16th.
+TEST(SmallStep, PathNumbersStepAtMostTheAskedShareOfTheirInterval) {
+    for (std::uint32_t n : {16u, 128u, 1024u}) {
+        CommitRun run = run_commit(300, n);
+        const SampleLayout& l = run.layout;
+        std::vector<int> bits_of(kCameraDims, kHighBits);
+        bits_of.resize(kCameraDims + l.bounce_dims);
+        for (int s = 0; s < kSlotCount; ++s)
+            if (l.has(Slot(s))) bits_of[kCameraDims + l.index[s]] = l.bits[s];
+        double lo[2] = {1, 1}, hi[2] = {0, 0}; // film, path: moves times their largest
+        std::uint64_t moves = 0;
+        for (std::uint32_t c = 0; c < run.chains; c += 2) {
+            const std::uint32_t alive = c % (l.depth + 1);
+            for (std::uint32_t d = 0; d < kCameraDims + alive * l.bounce_dims; ++d) {
+                const bool path = d >= kCameraDims;
+                const int bits =
+                    bits_of[path ? kCameraDims + (d - kCameraDims) % l.bounce_dims : d];
+                const std::uint32_t mask = (1u << bits) - 1u, i = c * run.dims + d;
+                const std::uint32_t up = (run.lazy[i] - run.prior[i]) & mask;
+                const std::uint32_t steps = std::min(up, (0u - up) & mask);
+                const double grid = std::ldexp(1.0, -bits), largest = path ? 1.0 / n : 1.0 / 16;
+                const double moved = steps * grid;
+                ASSERT_LE(moved, largest + grid)
+                    << "N " << n << ", chain " << c << ", number " << d;
+                ASSERT_GE(moved, largest / 16 - grid)
+                    << "N " << n << ", chain " << c << ", number " << d;
+                lo[path] = std::min(lo[path], moved / largest);
+                hi[path] = std::max(hi[path], moved / largest);
+                moves += path;
+            }
+        }
+        std::printf("--path-step %u: %llu path moves, %.4f..%.4f of 1/N; film %.4f..%.4f of "
+                    "1/16\n",
+                    n, (unsigned long long)moves, lo[1], hi[1], lo[0], hi[0]);
+        EXPECT_GT(moves, 10000u);
+        for (int path : {0, 1}) {
+            EXPECT_GE(hi[path], 0.95) << "N " << n << (path ? ", path" : ", film");
+            EXPECT_LE(lo[path], 1.0 / 16 * 1.05) << "N " << n << (path ? ", path" : ", film");
+        }
+    }
 }
 
 namespace {

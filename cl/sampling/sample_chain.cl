@@ -64,16 +64,17 @@ inline uint smp_start_u32(const SampleSource* s, uint bounce, LayoutSlot at) {
 }
 
 /* Small step of a `bits`-wide number, in grid steps (Kelemen et al. 2002):
- * 2^(bits - 6) * 2^(-4u), u = (r & 0x7FFFFFFF) / 2^31, rounded to nearest and
- * at least 1: exponentially distributed in [2^-10, 2^-6] of the unit
- * interval. r's top bit gives the sign, independent of the size, so the step
- * is symmetric. Integer only, so a lazy evaluation and the commit that
- * regenerates the number get the same step whatever a compiler does with
- * float expressions (contraction, reordering). 4u = whole + f with f in Q29;
- * 2^-f in Q31 is a degree-5 polynomial (Chebyshev interpolant, relative error
- * below 2^-23, so within 0.53 steps of the exact exponential for bits <= 24),
- * in Horner form with every partial result positive. For 10 <= bits <= 36. */
-inline uint smp_small_delta(uint r, uint bits) {
+ * 2^(bits - scale) * 2^(-4u), u = (r & 0x7FFFFFFF) / 2^31, rounded to nearest
+ * and at least 1: exponentially distributed in [2^-(scale + 4), 2^-scale] of
+ * the unit interval (Kelemen's scale is 6). r's top bit gives the sign,
+ * independent of the size, so the step is symmetric. Integer only, so a lazy
+ * evaluation and the commit that regenerates the number get the same step
+ * whatever a compiler does with float expressions (contraction, reordering).
+ * 4u = whole + f with f in Q29; 2^-f in Q31 is a degree-5 polynomial
+ * (Chebyshev interpolant, relative error below 2^-23, so within 0.53 steps of
+ * the exact exponential for bits - scale <= 18), in Horner form with every
+ * partial result positive. For scale + 4 <= bits <= scale + 30. */
+inline uint smp_small_delta(uint r, uint bits, uint scale) {
     uint t = r & 0x7FFFFFFFu;
     uint whole = t >> 29;
     ulong f = (ulong)(t & 0x1FFFFFFFu);
@@ -82,7 +83,7 @@ inline uint smp_small_delta(uint r, uint bits) {
     p = 515780381ul - ((p * f) >> 29);
     p = 1488513547ul - ((p * f) >> 29);
     p = 2147483527ul - ((p * f) >> 29);
-    uint shift = 37u + whole - bits; /* p * 2^(bits - 6 - whole) / 2^31 */
+    uint shift = 31u + scale + whole - bits; /* p * 2^(bits - scale - whole) / 2^31 */
     return max((uint)((p + (1ul << (shift - 1u))) >> shift), 1u);
 }
 
@@ -97,12 +98,21 @@ inline uint smp_film_stretch(const SampleSource* s, uint dim) {
                              MLT_FILM_STEP_FLOOR);
 }
 
+/* The small step of the number in slot `at` for stream number r, in grid
+ * steps of a `bits`-wide slot: a film number's is Kelemen's (scale 6) times
+ * its stretch, a path number's has the largest step 2^-MLT_PATH_STEP_LOG2
+ * (--path-step). */
+inline uint smp_step_of(const SampleSource* s, LayoutSlot at, uint r, uint bits) {
+    if (at.dim < LAYOUT_CAMERA_DIMS)
+        return smp_small_delta(r, bits, 6u) * smp_film_stretch(s, at.dim);
+    return smp_small_delta(r, bits, MLT_PATH_STEP_LOG2);
+}
+
 #ifndef PSS_FLOAT32
 
-/* Integer value v of a `bits`-wide number moved by `stretch` times the small
- * step of stream number r, wrapping around the slot's grid. */
-inline uint smp_perturb_bits(uint v, uint r, uint bits, uint stretch) {
-    uint delta = smp_small_delta(r, bits) * stretch;
+/* Integer value v of a `bits`-wide number moved by `delta` grid steps, up
+ * where stream number r's top bit is set, wrapping around the slot's grid. */
+inline uint smp_perturb_bits(uint v, uint r, uint bits, uint delta) {
     return ((r >> 31) ? v + delta : v - delta) & ((1u << bits) - 1u);
 }
 
@@ -116,8 +126,8 @@ inline uint smp_propose_bits(const SampleSource* s, uint bounce, LayoutSlot at) 
     bool live = at.dim < LAYOUT_CAMERA_DIMS || bounce < s->alive;
     if (s->mode >= SMP_LARGE || !live) return r >> (32u - at.bits);
     uint v = pss_read_bits(s->state, s->chain, s->stride, at.bit_offset, at.bits);
-    uint stretch = at.dim < LAYOUT_CAMERA_DIMS ? smp_film_stretch(s, at.dim) : 1u;
-    return s->mode == SMP_REPLAY ? v : smp_perturb_bits(v, r, at.bits, stretch);
+    return s->mode == SMP_REPLAY ? v
+                                 : smp_perturb_bits(v, r, at.bits, smp_step_of(s, at, r, at.bits));
 }
 
 inline float smp_propose(const SampleSource* s, uint bounce, LayoutSlot at) {
@@ -132,9 +142,9 @@ inline void smp_commit_slot(const SampleSource* s, PssWriter* w, uint bounce, La
 #else
 
 /* The float32 reference: 24-bit numbers moved in float arithmetic by
- * `stretch` times the small step of a 24-bit slot, wrapping around [0, 1). */
-inline float smp_perturb(float x, uint r, uint stretch) {
-    float d = layout_unit(smp_small_delta(r, 24u) * stretch, 24u);
+ * `delta` grid steps of a 24-bit slot, wrapping around [0, 1). */
+inline float smp_perturb(float x, uint r, uint delta) {
+    float d = layout_unit(delta, 24u);
     float y = (r >> 31) ? x + d : x - d;
     y -= floor(y);
     return y < 1.0f ? y : 0.0f;
@@ -149,8 +159,7 @@ inline float smp_propose(const SampleSource* s, uint bounce, LayoutSlot at) {
     bool live = at.dim < LAYOUT_CAMERA_DIMS || bounce < s->alive;
     if (s->mode >= SMP_LARGE || !live) return (float)(r >> 8) * (1.0f / 16777216.0f);
     float x = pss_load(s->state, s->chain, s->stride, at);
-    uint stretch = at.dim < LAYOUT_CAMERA_DIMS ? smp_film_stretch(s, at.dim) : 1u;
-    return s->mode == SMP_REPLAY ? x : smp_perturb(x, r, stretch);
+    return s->mode == SMP_REPLAY ? x : smp_perturb(x, r, smp_step_of(s, at, r, 24u));
 }
 
 inline void smp_commit_slot(const SampleSource* s, PssWriter* w, uint bounce, LayoutSlot at) {

@@ -42,8 +42,10 @@ std::string default_out(const std::string& scene) {
     return (dot == std::string::npos ? base : base.substr(0, dot)) + ".png";
 }
 
-// The flags of the table that Options' command takes, and its scene.
-template <class Options> void parse_flags(ArgReader& r, Options& o) {
+// The flags of the table that Options' command takes, and its scene; the
+// flags given, in order.
+template <class Options> std::vector<const Flag*> parse_flags(ArgReader& r, Options& o) {
+    std::vector<const Flag*> given;
     while (!r.done()) {
         std::string arg = r.next();
         std::string name = arg.substr(0, arg.find('='));
@@ -53,12 +55,26 @@ template <class Options> void parse_flags(ArgReader& r, Options& o) {
             continue;
         }
         apply(*f, o, FlagValue{*f, *f->syntax ? r.value(name, arg) : ""});
+        given.push_back(f);
     }
+    return given;
+}
+
+// The flags of the other method's section: PT's with MLT, MLT's with PT.
+std::vector<std::string> idle_flag_warnings(const std::vector<const Flag*>& given, Method m) {
+    const Section idle = m == Method::Pt ? Section::Mlt : Section::Pt;
+    std::vector<std::string> w;
+    for (const Flag* f : given)
+        if (f->section == idle)
+            w.push_back("warning: " + std::string(f->name) + " changes nothing with --method " +
+                        (m == Method::Pt ? "pt" : "mlt") + " (ignored)");
+    return w;
 }
 
 RenderOptions parse_render(ArgReader& r) {
     RenderOptions o;
-    parse_flags(r, o);
+    const std::vector<const Flag*> given = parse_flags(r, o);
+    o.warnings = idle_flag_warnings(given, o.method);
     if (o.scene.empty()) throw UsageError("render: no scene file given");
     if (o.spp && o.time_s) throw UsageError("--spp and --time: give one of them, not both");
     if (!o.spp && !o.time_s) o.spp = kDefaultSpp;

@@ -2,6 +2,7 @@
 // the flag's entry of the table (options.hpp); errors name the flag.
 #include "app/options.hpp"
 
+#include "base/bits.hpp"
 #include "base/error.hpp"
 
 #include <cerrno>
@@ -54,6 +55,13 @@ long long FlagValue::integer() const {
         throw UsageError(name_of(*this) + ": " + text + " is out of range " +
                          std::to_string(flag.lo) + ".." + std::to_string(flag.hi));
     return x;
+}
+
+std::uint32_t FlagValue::power_of_two() const {
+    long long x = integer();
+    if (!is_power_of_two(std::uint64_t(x)))
+        throw UsageError(name_of(*this) + ": " + text + " is not a power of two");
+    return std::uint32_t(x);
 }
 
 std::uint64_t FlagValue::u64() const {

@@ -1,7 +1,6 @@
 // The table of render's and budget's flags (options.hpp).
 #include "app/options.hpp"
 
-#include "base/bits.hpp"
 #include "base/error.hpp"
 #include "device/device_profile.hpp"
 #include "image/image.hpp"
@@ -170,12 +169,7 @@ const std::vector<Flag> kMltFlags = {
      "half the device memory)",
      1, 1 << 26},
     {"--proposals", "K", Section::Mlt,
-     [](JobOptions& o, const FlagValue& v) {
-         long long k = v.integer();
-         if (!is_power_of_two(std::uint64_t(k)))
-             throw UsageError(std::string(v.flag.name) + ": " + v.text + " is not a power of two");
-         o.mlt.proposals = std::uint32_t(k);
-     },
+     [](JobOptions& o, const FlagValue& v) { o.mlt.proposals = v.power_of_two(); },
      "split-transition MLT: K proposals per chain, N/K chains (K a power of two in {range}; "
      "default {default}, plain MLT)",
      1, 64, nullptr, [] { return std::to_string(MltOptions().proposals); }},
@@ -249,6 +243,12 @@ const std::vector<Flag> kMltFlags = {
          std::uint32_t s = MltOptions().film_step;
          return s == 0 ? std::string("film") : s == kFilmStepAuto ? "auto" : std::to_string(s);
      }},
+    {"--path-step", "N", Section::Mlt,
+     [](RenderOptions& o, const FlagValue& v) { o.mlt.path_step = v.power_of_two(); },
+     "the largest small step of a chain's path numbers (all but its film position): 1/N of "
+     "their unit interval, the smallest 1/(16 N) (N a power of two in {range}; Kelemen's is "
+     "64; default {default}; doc/design.md, \"Small steps\")",
+     kPathStepMin, kPathStepMax, nullptr, [] { return std::to_string(MltOptions().path_step); }},
     {"--restart", "STEPS", Section::Mlt,
      [](RenderOptions& o, const FlagValue& v) { o.mlt.restart = std::uint32_t(v.integer()); },
      "every STEPS steps each chain starts again at a pick of --burn-in-iters fresh burn-in "

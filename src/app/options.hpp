@@ -54,6 +54,9 @@ struct RenderOptions : JobOptions {
     Roulette roulette;           // --rr-*: every method
     PtSampler sampler = kDefaultPtSampler;
     bool quiet = false;
+    // Flags given that change nothing with this method ("--sampler changes
+    // nothing with --method mlt"), for the render to warn of.
+    std::vector<std::string> warnings;
 };
 
 struct BudgetOptions : JobOptions {
@@ -71,7 +74,8 @@ struct FlagValue {
     const Flag& flag;
     std::string text;
 
-    long long integer() const; // in flag.lo..flag.hi
+    long long integer() const;          // in flag.lo..flag.hi
+    std::uint32_t power_of_two() const; // an integer() that is a power of two
     std::uint64_t u64() const;
     std::uint64_t bytes() const; // a size: 65536, 64K, 16M, 1G
     double probability() const;  // in [0, 1]

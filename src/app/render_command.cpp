@@ -122,7 +122,11 @@ void set_up(const RenderOptions& o, RankGroup& ranks, RenderSetup& s) {
     check_output_dirs(o.outs);
     if (!o.log.empty()) check_output_dirs({o.log}, "--log");
     s.scene = load_scene(o.scene);
-    if (ranks.rank() == 0) print_scene_warnings(s.scene);
+    if (ranks.rank() == 0) {
+        for (const std::string& w : o.warnings)
+            std::fprintf(stderr, "smallmlt: %s\n", w.c_str());
+        print_scene_warnings(s.scene);
+    }
     if (o.width) s.scene.width = *o.width;
     if (o.height) s.scene.height = *o.height;
     if (o.depth) s.scene.depth = *o.depth;

@@ -1,5 +1,6 @@
 #include "render/mlt.hpp"
 
+#include "base/bits.hpp"
 #include "base/clock.hpp"
 #include "base/color.hpp"
 #include "base/error.hpp"
@@ -26,12 +27,18 @@ std::string program_defines(const DeviceScene& ds, const MltOptions& opt,
     d += "#define MLT_FILM_STEP " + std::to_string(film_step_asked(opt)) + "u\n";
     d += "#define MLT_FILM_STEP_SHARE " + std::to_string(film_step_share(opt)) + "u\n";
     d += "#define MLT_FILM_STEP_FLOOR " + std::to_string(film_step_floor(opt)) + "u\n";
+    d += "#define MLT_PATH_STEP_LOG2 " + std::to_string(log2_of(opt.path_step)) + "u\n";
     return d + split_defines(opt.split);
 }
 
 const MltOptions& check_options(const MltOptions& opt, const MltTestHooks& hooks) {
     check_chain_shape(mlt_chain_shape(opt, hooks));
     if (opt.stuck_run == 0) throw UsageError("--stuck-run: must be at least 1");
+    if (!is_power_of_two(opt.path_step) || opt.path_step < kPathStepMin ||
+        opt.path_step > kPathStepMax)
+        throw UsageError("--path-step: " + std::to_string(opt.path_step) +
+                         " is not a power of two from " + std::to_string(kPathStepMin) + " to " +
+                         std::to_string(kPathStepMax));
     return opt;
 }
 

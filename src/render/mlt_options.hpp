@@ -31,6 +31,12 @@ constexpr std::uint32_t kFilmStepAuto = 0xFFFFFFFFu;
 constexpr std::uint32_t kFilmStepAutoShare = 2;
 constexpr std::uint32_t kFilmStepFloorPixels = 4;
 constexpr std::uint32_t kDefaultFilmStep = kFilmStepAuto;
+// --path-step: the path numbers' largest small step is 1/kDefaultPathStep of
+// their unit interval, half Kelemen's 1/64 (doc/RESULTS.md, "Path numbers'
+// steps half as wide").
+// From 1/16 (steps down to 2^-8, a 16-bit slot's 256 grid steps) to 1/1024.
+constexpr std::uint32_t kDefaultPathStep = 128;
+constexpr std::uint32_t kPathStepMin = 16, kPathStepMax = 1024;
 
 // What tests change in an MLT render besides its options, passed to the
 // renderer apart from them (the command line never sets these): reference
@@ -103,6 +109,10 @@ struct MltOptions {
     // The largest small step of the film numbers, in pixels (0: a 64th of
     // the film, Kelemen's 2^-6 of the unit square; cl/sampling/sample_chain.cl).
     std::uint32_t film_step = kDefaultFilmStep;
+    // The largest small step of the path's numbers (all but the film's two)
+    // is 1/path_step of their unit interval, the smallest 1/16 of that: a
+    // power of two, the kernels' MLT_PATH_STEP_LOG2 (cl/sampling/sample_chain.cl).
+    std::uint32_t path_step = kDefaultPathStep;
     // Every `restart` steps, each chain starts again at a pick of
     // burn_in_iters fresh burn-in rounds (MltBurnIn::restart): more, shorter
     // chains in the same memory. 0: never.

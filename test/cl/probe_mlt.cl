@@ -78,12 +78,12 @@ __kernel void probe_chain_pixel(const Frame frame, STRATA_ARGS, __global const u
 }
 
 #ifndef PSS_FLOAT32
-/* out[i] = v[i] moved by the small step of stream number r[i] on the grid of
- * a `bits`-wide slot (smp_perturb_bits), for i < n. */
+/* out[i] = v[i] moved by the small step of stream number r[i] at `scale`
+ * (smp_small_delta) on the grid of a `bits`-wide slot, for i < n. */
 __kernel void probe_small_step(__global const uint* r, __global const uint* v, const uint bits,
-                               const uint n, __global uint* out) {
+                               const uint scale, const uint n, __global uint* out) {
     uint i = get_global_id(0);
-    if (i < n) out[i] = smp_perturb_bits(v[i], r[i], bits, 1u);
+    if (i < n) out[i] = smp_perturb_bits(v[i], r[i], bits, smp_small_delta(r[i], bits, scale));
 }
 
 /* The stretch of a film number's small step (x, then y) in each of n tiles. */
@@ -97,19 +97,27 @@ __kernel void probe_film_stretch(__global const FilmTile* tiles, const uint n, _
 }
 
 /* Chain c (live bounces c % (depth + 1)) proposes with key rng_key(seed, c,
- * 1), a small step for even c, a large one for odd c: lazy[c * dims + d] is
- * number d as the path reads it, times 2^bits; then the proposal is committed
+ * 1), a small step for even c, a large one for odd c: prior[c * dims + d] is
+ * number d of the state before, lazy[c * dims + d] number d as the path reads
+ * it, times 2^bits; then the proposal is committed
  * with (3c) % (depth + 1) bounces and stored[c * dims + d] is number d of the
  * state (the committed numbers, the film's and those bounces', must equal
  * lazy). */
 __kernel void probe_commit_agrees(__global uint* state, const uint num_chains, const uint depth,
-                                  const ulong seed, __global uint* lazy, __global uint* stored) {
+                                  const ulong seed, __global uint* prior, __global uint* lazy,
+                                  __global uint* stored) {
     uint c = get_global_id(0);
     if (c >= num_chains) return;
     uint dims = probe_dims(depth);
-    FilmTile unused = {0u, 0u, 1u, 1u, 0.0f, 0.0f, 1.0f, 1.0f}; /* no film point is read */
+    for (uint d = 0; d < dims; ++d) {
+        LayoutSlot at = probe_slot(d);
+        prior[c * dims + d] = pss_read_bits(state, c, num_chains, at.bit_offset, at.bits);
+    }
+    /* A whole film of 64x64, whose film numbers (no film point is read) step
+     * at most 4 pixels (--film-step auto's floor), a 16th of their interval. */
+    FilmTile film = {0u, 0u, 64u, 64u, 0.0f, 0.0f, 1.0f, 1.0f};
     SampleSource src = smp_chain(state, c, num_chains, rng_key(seed, c, 1u),
-                                 (c & 1u) ? SMP_LARGE : SMP_SMALL, c % (depth + 1u), unused);
+                                 (c & 1u) ? SMP_LARGE : SMP_SMALL, c % (depth + 1u), film);
     for (uint d = 0; d < dims; ++d) {
         LayoutSlot at = probe_slot(d);
         uint bounce =
