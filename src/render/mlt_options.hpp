@@ -33,8 +33,8 @@ constexpr std::uint32_t kFilmStepFloorPixels = 4;
 constexpr std::uint32_t kDefaultFilmStep = kFilmStepAuto;
 // --path-step: the path numbers' largest small step is 1/kDefaultPathStep of
 // their unit interval, half Kelemen's 1/64 (doc/RESULTS.md, "Path numbers'
-// steps half as wide").
-// From 1/16 (steps down to 2^-8, a 16-bit slot's 256 grid steps) to 1/1024.
+// steps half as wide"). At most 1/1024, so that the smallest step, 1/(16 N),
+// is still 4 grid steps of a 16-bit slot.
 constexpr std::uint32_t kDefaultPathStep = 128;
 constexpr std::uint32_t kPathStepMin = 16, kPathStepMax = 1024;
 
