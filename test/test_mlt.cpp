@@ -357,6 +357,45 @@ TEST(MltSplat, RestartedStratifiedImageMatchesTheTarget) {
     check_splat_image(Target::Luminance, true, 1, 4, 4);
 }
 
+// --restart auto: every 16 steps where the chains are at least the film's
+// pixels and a restart's samples are large steps' (Kelemen's weights with
+// burn-in), else never; a number is kept. Then in renders: the known target
+// at 16x16 (256 pixels) with 1,024 chains restarts every 16 steps and
+// splats its restarts' samples, at 64x64 (4,096 pixels) it never restarts.
+TEST(MltRestart, AutoRestartsWhereTheChainsAreAtLeastThePixels) {
+    MltOptions opt;
+    EXPECT_EQ(opt.restart, kRestartAuto) << "the default";
+    EXPECT_EQ(restart_steps(opt, 16384, 16384), kRestartAutoSteps);
+    EXPECT_EQ(restart_steps(opt, 16383, 16384), 0u);
+    MltOptions expected = opt;
+    expected.kelemen = false;
+    EXPECT_EQ(restart_steps(expected, 16384, 1024), 0u);
+    MltOptions no_burn_in = opt;
+    no_burn_in.burn_in = false;
+    EXPECT_EQ(restart_steps(no_burn_in, 16384, 1024), 0u);
+    MltOptions given = opt;
+    given.restart = 32;
+    EXPECT_EQ(restart_steps(given, 1, 1024), 32u);
+    given.restart = 0;
+    EXPECT_EQ(restart_steps(given, 16384, 1024), 0u);
+    for (std::uint32_t side : {16u, 64u}) {
+        DeviceScene ds = test::layout_only_scene({}, side, side);
+        MltOptions o;
+        o.split = Split::None;
+        o.threads = 1024;
+        o.burn_in_iters = 4;
+        MltTestHooks hooks;
+        hooks.evaluator = "test/cl/eval_target.cl";
+        MltRenderer mlt(test::cl(), ds, o, hooks);
+        mlt.prepare();
+        mlt.step(40);
+        const MltReport r = mlt.report();
+        EXPECT_EQ(r.restart_every, side == 16 ? kRestartAutoSteps : 0u) << side;
+        EXPECT_EQ(r.restarts, side == 16 ? 2u : 0u) << side;
+        EXPECT_EQ(r.restart_samples, side == 16) << side;
+    }
+}
+
 // MLT renders against PT, block by block, and b against PT's mean:
 // test_render_blocks.cpp.
 

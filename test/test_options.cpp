@@ -219,6 +219,7 @@ TEST(Options, ChoicesSetTheirFields) {
     EXPECT_TRUE(parse("render s.scene --weights kelemen").render.mlt.kelemen);
     EXPECT_FALSE(parse("render s.scene --burn-in none").render.mlt.burn_in);
     EXPECT_EQ(parse("render s.scene --restart 32").render.mlt.restart, 32u);
+    EXPECT_EQ(parse("render s.scene --restart auto").render.mlt.restart, kRestartAuto);
     EXPECT_EQ(parse("render s.scene --path-step 64").render.mlt.path_step, 64u);
     EXPECT_EQ(usage_error("render s.scene --path-step 100"),
               "--path-step: 100 is not a power of two");

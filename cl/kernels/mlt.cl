@@ -13,11 +13,14 @@
  * and the host can tell how well path tracing renders the MLT part
  * (src/render/split.hpp) and weigh the two-stage target's cells
  * (src/render/target.hpp). The host adds them in sample order: no atomics,
- * and the same sums every time. */
+ * and the same sums every time. With `splat` (a restart's rounds under
+ * Kelemen's weights) each sample is also one of the large steps' uniform
+ * samples in the film (mlt_splat_restart_sample). */
 __kernel void mlt_luminance(SCENE_ARGS, __global const float* weight, const TargetCells cells,
                             const BurnInFilm film, __global uint* state, const uint round,
                             const uint count, __global float* lum, __global float4* omc,
-                            __global ulong* stats) {
+                            __global ulong* stats, STRATA_ARGS, FILM_ARGS, const ulong seed,
+                            const uint splat) {
     __local uint l_count[MLT_COUNTS];
     uint i = get_global_id(0), nonfinite = 0u;
     mlt_zero_counts(l_count);
@@ -34,6 +37,11 @@ __kernel void mlt_luminance(SCENE_ARGS, __global const float* weight, const Targ
         omc[2u * i] = (float4)(s.omc, as_float(s.pixel));
         omc[2u * i + 1u] = (float4)(s.f, s.behind_specular);
 #endif
+        if (splat) {
+            Film image = FILM_VIEW();
+            mlt_splat_restart_sample(&image, weight, cells, &frame, strata_tiles, strata_weights, s,
+                                     rng_key(seed, i, round));
+        }
     }
     mlt_publish_nonfinite(stats, l_count, nonfinite);
 }

@@ -210,6 +210,25 @@ inline float mlt_try_proposal(const SceneView* sc, const Frame* frame, SampleSou
     return a;
 }
 
+/* A restart's burn-in sample s as one more uniform sample of Kelemen's
+ * large steps (doc/design.md, "Restarts"): F(s)/(I(s) + c b0) in the large
+ * steps' layer, where c b0, its tile's kelemen_pb, counts the restarts'
+ * samples per mutation in c. Nothing where the target is 0 (the OMC part's
+ * cells). Returns the global atomics it made. */
+inline uint mlt_splat_restart_sample(const Film* film, __global const float* weight,
+                                     const TargetCells cells, const Frame* frame,
+                                     __global const FilmTile* tiles,
+                                     __global const StratumWeights* weights, EvalResult s,
+                                     ulong key) {
+    StratumWeights sw = weights[strata_pixel_tile(tiles, frame, s.pixel)];
+    MltTarget target = mlt_target(weight, cells, frame, sw.kelemen_pb);
+    float w = mlt_weight(&target, s.pixel);
+    if (w <= 0.0f) return 0u;
+    float3 f = s.f * w;
+    return film_splat(film, s.pixel, FILM_LAYER_LARGE, f,
+                      mlt_kelemen(&target, path_luminance(f)) / w, key, MLT_DIM_ROUND_LARGE, false);
+}
+
 /* The weight of staying at x after the chain's K proposals with
  * acceptances a[0..K-1]: K - sum a_j (never below 0 after rounding). */
 inline float mlt_stay_weight(__local const float* a, uint proposals) {

@@ -30,6 +30,14 @@ inline FilmPoint strata_point(const FilmTile* t, const Frame* frame, float u, fl
     return p;
 }
 
+/* The tile of `pixel` among the grid's tiles (src/render/strata.cpp,
+ * strata_grid): row-major, each as large as the first but the last row and
+ * column. */
+inline uint strata_pixel_tile(__global const FilmTile* tiles, const Frame* frame, uint pixel) {
+    uint sx = tiles[0].w, sy = tiles[0].h, columns = (frame->width + sx - 1u) / sx;
+    return pixel / frame->width / sy * columns + pixel % frame->width / sx;
+}
+
 /* One of a burn-in sample's `bits`-wide film numbers `g` (of the whole film,
  * along an axis of n pixels) as a number of the tile [x0, x0 + w) on that
  * axis: the tile's grid value nearest below the same position, clamped into

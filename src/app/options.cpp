@@ -249,13 +249,21 @@ const std::vector<Flag> kMltFlags = {
      "their unit interval, the smallest 1/(16 N) (N a power of two in {range}; Kelemen's is "
      "64; default {default}; doc/design.md, \"Small steps\")",
      kPathStepMin, kPathStepMax, nullptr, [] { return std::to_string(MltOptions().path_step); }},
-    {"--restart", "STEPS", Section::Mlt,
-     [](RenderOptions& o, const FlagValue& v) { o.mlt.restart = std::uint32_t(v.integer()); },
+    {"--restart", "auto|STEPS", Section::Mlt,
+     [](RenderOptions& o, const FlagValue& v) {
+         o.mlt.restart = v.text == "auto" ? kRestartAuto : std::uint32_t(v.integer());
+     },
      "every STEPS steps each chain starts again at a pick of --burn-in-iters fresh burn-in "
-     "rounds (at a fresh sample without burn-in): more, shorter chains, whose error is less "
-     "correlated across the film; 0: never ({range}; default {default}; doc/design.md, "
-     "\"Restarts\")",
-     0, 1 << 30, nullptr, [] { return std::to_string(MltOptions().restart); }},
+     "rounds (at a fresh sample without burn-in), whose samples are also large steps' under "
+     "Kelemen's weights: more, shorter chains, whose error is less correlated across the "
+     "film; 0: never ({range}); auto: every 16 steps where the chains are at least the "
+     "film's pixels and Kelemen's weights are in force, else never (default {default}; "
+     "doc/design.md, \"Restarts\")",
+     0, 1 << 30, nullptr,
+     [] {
+         std::uint32_t s = MltOptions().restart;
+         return s == kRestartAuto ? std::string("auto") : std::to_string(s);
+     }},
     {"--large-step", "P", Section::Mlt,
      [](JobOptions& o, const FlagValue& v) { o.mlt.large_step = float(v.probability()); },
      "probability that a mutation draws a whole new path (default {default})", 0, 0, nullptr,

@@ -102,6 +102,8 @@ MltRenderer::MltRenderer(const ClContext& cl, const DeviceScene& ds, const MltOp
                           opt.film_pass_mutations, mlt_chain_shape(opt).film_layers)) {
     kelemen_pb_.assign(grid_.count(), 0.0f);
     kelemen_b0_.assign(grid_.count(), 0.0);
+    kelemen_large_.assign(grid_.count(), 0.0);
+    kelemen_rate_.assign(grid_.count(), 0.0);
     split_ = opt.split;
     if (opt.split != Split::None)
         omc_ = make_omc_part(split_ == Split::Auto ? kChainsSplit : split_);
@@ -115,7 +117,7 @@ void MltRenderer::sample_starts(RankGroup& ranks) {
         target_.set(hooks_.cells, ds_.frame.width, ds_.frame.height,
                     std::vector<float>(hooks_.zero_cells.size(), 1.0f), hooks_.zero_cells);
     burn_in_.run(ranks, plan_, scene_, target_, burn_in_film_,
-                 MltBurnIn::Chains{state_, stats_, picks_, chains()}, grid_, strata_);
+                 MltBurnIn::Chains{state_, stats_, picks_, chains()}, grid_, strata_, film_);
 }
 
 BEstimate MltRenderer::b_estimate(const MltStats& s) const {
@@ -149,18 +151,47 @@ void MltRenderer::set_stratum_weights(RankGroup& ranks) {
     if (kelemen_in_force(opt_)) {
         const double p = std::clamp(double(large_step_of(opt_)), 0.0, 1.0);
         const std::vector<double> b0 = burn_in_.ranks_b(ranks, grid_);
+        const std::vector<double> q = restart_rate(ranks);
         for (std::uint32_t t = 0; t < grid_.count(); ++t) {
-            kelemen_pb_[t] = float(p * density[t] * b0[t] * hooks_.b0_scale);
+            kelemen_large_[t] = p * density[t];
+            kelemen_rate_[t] = kelemen_large_[t] + q[t];
+            kelemen_pb_[t] = float(kelemen_rate_[t] * b0[t] * hooks_.b0_scale);
             // the large steps' layer by the b0 of the weights, as they have it
-            kelemen_b0_[t] = double(kelemen_pb_[t]) / (p * density[t]);
+            kelemen_b0_[t] = double(kelemen_pb_[t]) / kelemen_rate_[t];
             w[t].kelemen_pb = kelemen_pb_[t];
         }
     }
     strata_.set_weights(w);
 }
 
+std::vector<double> MltRenderer::restart_rate(RankGroup& ranks) const {
+    const std::uint32_t tiles = grid_.count();
+    std::vector<double> q(tiles, 0.0);
+    if (!opt_.restart || !opt_.burn_in) return q;
+    // Each tile's threads (its work-groups', as tile_counts counts them) and
+    // all threads, over every rank, so that every rank weighs with one c.
+    std::vector<double> threads(tiles + 1, 0.0);
+    const std::vector<std::uint32_t>& group_tile = strata_.group_tiles();
+    for (std::size_t g = 0; g < group_tile.size(); ++g) {
+        const std::uint64_t first = g * kDefaultWorkGroup;
+        if (first < opt_.threads)
+            threads[group_tile[g]] +=
+                double(std::min<std::uint64_t>(kDefaultWorkGroup, opt_.threads - first));
+    }
+    threads[tiles] = opt_.threads;
+    ranks.sum_all(threads);
+    for (std::uint32_t t = 0; t < tiles; ++t)
+        if (threads[t] > 0)
+            q[t] = double(opt_.burn_in_iters) * threads[tiles] * grid_.area(t, pixels()) /
+                   (double(opt_.restart) * threads[t]);
+    return q;
+}
+
 void MltRenderer::prepare(RankGroup& ranks) {
     Clock::time_point t0 = Clock::now();
+    if (opt_.restart == kRestartAuto) // every rank restarts alike, or none does
+        opt_.restart =
+            ranks.all(restart_steps(opt_, chains(), pixels()) > 0) ? kRestartAutoSteps : 0;
     sample_starts(ranks);
     set_stratum_weights(ranks);
     if (split_ == Split::Auto) {
@@ -203,7 +234,7 @@ void MltRenderer::restart_chains() {
                                std::uint32_t(pixels()), opt_.threads);
     burn_in_.restart(plan_, scene_, target_, film,
                      MltBurnIn::Chains{state_, stats_, picks_, chains()}, grid_, strata_,
-                     opt_.burn_in_iters);
+                     opt_.burn_in_iters, film_);
     init_chains(film);
 }
 
@@ -317,8 +348,11 @@ MltReport MltRenderer::report() const {
     r.behind_specular_share = omc_ ? behind_specular_share() : 0;
     r.kelemen = opt_.kelemen;
     r.strata = grid_.count();
+    r.restart_every = opt_.restart;
+    r.restart_samples = opt_.restart && opt_.burn_in && kelemen_in_force(opt_);
+    r.restarts = restarts_;
     if (!kelemen_pb_.empty()) {
-        double pb = 0; // p b0 of the whole film: the tiles' p B0 by their areas
+        double pb = 0; // c b0 of the whole film: the tiles' c B0 by their areas
         for (std::uint32_t t = 0; t < grid_.count(); ++t)
             pb += double(kelemen_pb_[t]) * grid_.area(t, pixels());
         r.kelemen_pb = grid_.count() == 1 ? kelemen_pb_[0] : float(pb);

@@ -168,10 +168,15 @@ class MltRenderer : public Integrator {
     std::uint32_t steps_run_ = 0;      // steps of the chains (none with Split::All)
     // The OMC part's path tracer for `split`.
     std::unique_ptr<OmcSchedule> make_omc_part(Split split) const;
-    // Kelemen's weights, per tile: p B0, B0 from every rank's burn-in, and
+    // Kelemen's weights, per tile: c B0, B0 from every rank's burn-in, and
     // B0 itself, which scales the large steps' layer of the film; 0 without.
+    // c, the uniform samples per mutation, is kelemen_rate_: the large
+    // steps' p q (kelemen_large_) and the restarts' samples (restart_rate).
     std::vector<float> kelemen_pb_;
-    std::vector<double> kelemen_b0_;
+    std::vector<double> kelemen_b0_, kelemen_large_, kelemen_rate_;
+    // Per tile, the restarts' burn-in samples that land in it per mutation
+    // of its chains, over every rank (--restart with burn-in; else 0).
+    std::vector<double> restart_rate(RankGroup& ranks) const;
     // What the split's rule weighs, from the burn-in and the first step.
     SplitCosts split_costs() const;
     Image image_of(const Tally& summed, bool mlt, bool omc) const;

@@ -54,7 +54,8 @@ MltBurnIn::MltBurnIn(const ClContext& cl, cl_program program, const MltOptions& 
 void MltBurnIn::sample_round(const Round& r, std::uint32_t it, bool parts, BurnInSums& s) {
     const std::uint32_t m = opt_.threads, pixels = std::uint32_t(r.grid.pixel_tile.size());
     k_lum_.set_args(r.scene, r.target, r.film, r.chains.state, cl_uint(it), cl_uint(m), r.lum,
-                    keeps_parts() ? r.omc : r.lum, r.chains.stats);
+                    keeps_parts() ? r.omc : r.lum, r.chains.stats, r.strata, r.image,
+                    cl_ulong(mlt_seed(opt_.seed, MltStream::RestartSplat)), cl_uint(r.splat));
     k_lum_.run(cl_, m);
     r.lum.read(cl_, host_.data());
     if (parts) {
@@ -77,14 +78,15 @@ void MltBurnIn::sample_round(const Round& r, std::uint32_t it, bool parts, BurnI
 
 MltBurnIn::Round::Round(const ClContext& cl, const MemoryPlan& plan, const SceneBuffers& scene,
                         TargetBuffer& target, const BurnInFilm& film, const Chains& chains,
-                        const StrataGrid& grid, bool parts)
-    : scene(scene), target(target), film(film), chains(chains), grid(grid),
-      lum(cl, CL_MEM_READ_WRITE, plan.bytes(Buffer::Luminance)),
+                        const StrataGrid& grid, const StrataBuffer& strata, MltFilm& image,
+                        bool parts, bool splat)
+    : scene(scene), target(target), film(film), chains(chains), grid(grid), strata(strata),
+      image(image), splat(splat), lum(cl, CL_MEM_READ_WRITE, plan.bytes(Buffer::Luminance)),
       omc(parts ? ClBuffer(cl, CL_MEM_READ_WRITE, plan.bytes(Buffer::OmcSamples)) : ClBuffer()) {}
 
 void MltBurnIn::run(RankGroup& ranks, const MemoryPlan& plan, const SceneBuffers& scene,
                     TargetBuffer& target, const BurnInFilm& film, const Chains& chains,
-                    const StrataGrid& grid, StrataBuffer& strata) {
+                    const StrataGrid& grid, StrataBuffer& strata, MltFilm& image) {
     const std::uint32_t m = opt_.threads, iters = burn_in_rounds(opt_);
     const bool parts = keeps_parts();
     // The rounds before `first` fix the target (the two-stage target's
@@ -95,7 +97,7 @@ void MltBurnIn::run(RankGroup& ranks, const MemoryPlan& plan, const SceneBuffers
     // as many tripled the error).
     const bool two_stage = opt_.target == Target::TwoStage, omc = omc_cells_in_force(opt_);
     const std::uint32_t first = omc ? omc_cell_rounds(opt_) : two_stage ? iters / 2 : 0;
-    const Round r(cl_, plan, scene, target, film, chains, grid, parts);
+    const Round r(cl_, plan, scene, target, film, chains, grid, strata, image, parts, false);
     const std::uint32_t tiles = grid.count();
     std::optional<StartPicks> picks;
     picks.emplace(film, scene.frame.width, scene.frame.height, grid);
@@ -175,15 +177,21 @@ void MltBurnIn::fresh_picks(const Chains& chains) {
 
 void MltBurnIn::restart(const MemoryPlan& plan, const SceneBuffers& scene, TargetBuffer& target,
                         const BurnInFilm& film, const Chains& chains, const StrataGrid& grid,
-                        StrataBuffer& strata, std::uint32_t rounds) {
+                        StrataBuffer& strata, std::uint32_t rounds, MltFilm& image) {
     if (!opt_.burn_in) return fresh_picks(chains);
-    const std::uint32_t m = opt_.threads;
-    const Round r(cl_, plan, scene, target, film, chains, grid, keeps_parts());
+    const std::uint32_t m = opt_.threads, drain_every = image.plan().steps_per_drain;
+    const Round r(cl_, plan, scene, target, film, chains, grid, strata, image, keeps_parts(),
+                  kelemen_in_force(opt_));
     StartPicks picks(film, scene.frame.width, scene.frame.height, grid);
     for (std::uint32_t k = 0; k < rounds; ++k, ++rounds_) {
         sample_round(r, rounds_, false, sums_);
         sums_.samples += m;
+        sums_.restart_samples += m;
         picks.add_round(rounds_, host_);
+        // A round splats at most what a step does; the steps after the
+        // restart find the film drained.
+        if (r.splat && drain_every && ((k + 1) % drain_every == 0 || k + 1 == rounds))
+            image.drain();
     }
     sums_.update_variance();
     write_picks(picks, chains, strata);

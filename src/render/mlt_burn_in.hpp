@@ -10,6 +10,7 @@
 #include "device/ocl.hpp"
 #include "device/scene_buffers.hpp"
 #include "render/burn_in.hpp"
+#include "render/mlt_film.hpp"
 #include "render/mlt_options.hpp"
 #include "render/ranks.hpp"
 #include "render/start_picks.hpp"
@@ -45,6 +46,7 @@ struct BurnInSums {
     std::vector<std::uint64_t> tile_lum; // lum_fixed of the samples in each tile
     double lum2 = 0;                     // sum of I^2
     double variance = 0;                 // of one sample's I (unbiased)
+    std::uint64_t restart_samples = 0;   // of those, the restarts' (--restart)
     void update_variance();              // from the sums above
     // b from these and `large` large steps of fixed-point sum large_lum
     // (each an OMC sample of I), with the error of the burn-in's variance
@@ -70,16 +72,18 @@ class MltBurnIn {
     // samples. Without burn-in, the picks are fresh samples.
     void run(RankGroup& ranks, const MemoryPlan& plan, const SceneBuffers& scene,
              TargetBuffer& target, const BurnInFilm& film, const Chains& chains,
-             const StrataGrid& grid, StrataBuffer& strata);
+             const StrataGrid& grid, StrataBuffer& strata, MltFilm& image);
 
     // Draws every chain's start anew (--restart): `rounds` more rounds of
     // the burn-in, numbered after every round so far and placed on the film
     // by `film`, from which each chain picks as run() did; their samples add
-    // to b's sums (and so to each tile's B), not to the parts. Without
-    // burn-in, fresh samples of a round of their own.
+    // to b's sums (and so to each tile's B), not to the parts, and with
+    // Kelemen's weights they are large steps' samples in `image`'s large
+    // steps' layer (drained as its plan says). Without burn-in, fresh
+    // samples of a round of their own.
     void restart(const MemoryPlan& plan, const SceneBuffers& scene, TargetBuffer& target,
                  const BurnInFilm& film, const Chains& chains, const StrataGrid& grid,
-                 StrataBuffer& strata, std::uint32_t rounds);
+                 StrataBuffer& strata, std::uint32_t rounds, MltFilm& image);
     const BurnInSums& sums() const { return sums_; }
     // Per tile, B of every rank's burn-in samples (a collective; the same on
     // every rank): b0, the normalization Kelemen's weights take.
@@ -107,12 +111,16 @@ class MltBurnIn {
     struct Round {
         Round(const ClContext& cl, const MemoryPlan& plan, const SceneBuffers& scene,
               TargetBuffer& target, const BurnInFilm& film, const Chains& chains,
-              const StrataGrid& grid, bool parts);
+              const StrataGrid& grid, const StrataBuffer& strata, MltFilm& image, bool parts,
+              bool splat);
         const SceneBuffers& scene;
         TargetBuffer& target;
         const BurnInFilm& film;
         const Chains& chains;
         const StrataGrid& grid;
+        const StrataBuffer& strata;
+        MltFilm& image;
+        bool splat; // the samples go to image's large steps' layer
         ClBuffer lum, omc;
     };
     void sample_round(const Round& r, std::uint32_t it, bool parts, BurnInSums& s);

@@ -59,6 +59,7 @@ void MltRenderer::tile_counts(MltTally& t) const {
     }
     t.burn_in_lum = burn_in_.sums().tile_lum;
     t.burn_in_samples = burn_in_.sums().samples;
+    t.restart_samples = burn_in_.sums().restart_samples;
 }
 
 std::vector<double> MltRenderer::tile_b() const {
@@ -94,19 +95,28 @@ Image MltRenderer::image_of(const Tally& summed, bool mlt, bool omc) const {
     Image img(int(ds_.frame.width), int(ds_.frame.height));
     const std::size_t n = 3 * pixels();
     if (mlt) {
-        // Per tile: B, and the film's unit in radiance per mutation.
+        // Per tile: B, and the film's unit in radiance per mutation; the
+        // large steps' layer in radiance per uniform sample, its count that
+        // of the large steps (p q per mutation) and of the restarts' samples
+        // that landed in the tile, and its weights' rate c over that.
         const std::vector<double> b = tile_b_of(t);
-        std::vector<double> unit(tiles, 0);
-        for (std::uint32_t s = 0; s < tiles; ++s)
+        std::vector<double> unit(tiles, 0), large_unit(tiles, 0);
+        for (std::uint32_t s = 0; s < tiles; ++s) {
+            const double area = double(pixels()) * grid_.area(s, pixels());
             if (t.mutations[s] > 0)
-                unit[s] = double(pixels()) * grid_.area(s, pixels()) / double(t.mutations[s]) /
-                          double(1u << FILM64_FRAC_BITS);
+                unit[s] = area / double(t.mutations[s]) / double(1u << FILM64_FRAC_BITS);
+            const double uniform = kelemen_large_[s] * double(t.mutations[s]) +
+                                   double(t.restart_samples) * grid_.area(s, pixels());
+            if (uniform > 0)
+                large_unit[s] = kelemen_b0_[s] * kelemen_rate_[s] * area / uniform /
+                                double(1u << FILM64_FRAC_BITS);
+        }
         const bool large = !t.large_film.empty();
         for (std::size_t i = 0; i < n; ++i) {
             const std::uint32_t s = grid_.pixel_tile[i / 3];
-            double v = double(t.film[i]) * b[s];
-            if (large) v += double(t.large_film[i]) * kelemen_b0_[s];
-            img.rgb[i] = float(v * unit[s]);
+            double v = double(t.film[i]) * b[s] * unit[s];
+            if (large) v += double(t.large_film[i]) * large_unit[s];
+            img.rgb[i] = float(v);
         }
     }
     if (omc && omc_) {

@@ -31,6 +31,9 @@ constexpr std::uint32_t kFilmStepAuto = 0xFFFFFFFFu;
 constexpr std::uint32_t kFilmStepAutoShare = 2;
 constexpr std::uint32_t kFilmStepFloorPixels = 4;
 constexpr std::uint32_t kDefaultFilmStep = kFilmStepAuto;
+// --restart auto (restart_steps).
+constexpr std::uint32_t kRestartAuto = 0xFFFFFFFFu;
+constexpr std::uint32_t kDefaultRestart = kRestartAuto;
 // --path-step: the path numbers' largest small step is 1/kDefaultPathStep of
 // their unit interval, half Kelemen's 1/64 (doc/RESULTS.md, "Path numbers'
 // steps half as wide"). At most 1/1024, so that the smallest step, 1/(16 N),
@@ -115,8 +118,8 @@ struct MltOptions {
     std::uint32_t path_step = kDefaultPathStep;
     // Every `restart` steps, each chain starts again at a pick of
     // burn_in_iters fresh burn-in rounds (MltBurnIn::restart): more, shorter
-    // chains in the same memory. 0: never.
-    std::uint32_t restart = 0;
+    // chains in the same memory. 0: never; kRestartAuto: restart_steps's rule.
+    std::uint32_t restart = kDefaultRestart;
 };
 
 // The large step's probability where none is given: it depends on burn-in
@@ -156,6 +159,19 @@ inline std::uint32_t film_step_pixels(const MltOptions& opt, std::uint32_t width
 // Kelemen's weights in force: asked for, with large steps to weigh.
 inline bool kelemen_in_force(const MltOptions& opt) {
     return opt.kelemen && large_step_of(opt) > 0;
+}
+
+// --restart auto: every kRestartAutoSteps steps where the chains are at
+// least the film's pixels and the restarts' samples are large steps'
+// (Kelemen's weights, with burn-in); else never (doc/design.md, "Restarts").
+// Where chains are fewer than pixels the restarts lose by MSE.
+constexpr std::uint32_t kRestartAutoSteps = 16;
+// The steps between restarts of a render of `opt` with `chains` chains on
+// a film of `pixels`, the same on every rank that has as many.
+inline std::uint32_t restart_steps(const MltOptions& opt, std::uint64_t chains,
+                                   std::uint64_t pixels) {
+    if (opt.restart != kRestartAuto) return opt.restart;
+    return kelemen_in_force(opt) && opt.burn_in && chains >= pixels ? kRestartAutoSteps : 0;
 }
 
 // The OMC part's cells in force: asked for, with a split and burn-in rounds

@@ -101,7 +101,14 @@ std::string mlt_summary(const MltReport& r) {
         out += buf;
     }
     if (r.kelemen && r.steps > 0) {
-        std::snprintf(buf, sizeof buf, "; Kelemen's weights (p b0 = %.4g)", double(r.kelemen_pb));
+        std::snprintf(buf, sizeof buf, "; Kelemen's weights (%s b0 = %.4g)",
+                      r.restart_samples ? "c" : "p", double(r.kelemen_pb));
+        out += buf;
+    }
+    if (r.restarts) {
+        std::snprintf(buf, sizeof buf, "; chains restarted every %u steps, %u times%s",
+                      r.restart_every, r.restarts,
+                      r.restart_samples ? ", their samples large steps'" : "");
         out += buf;
     }
     if (r.strata > 1) {

@@ -31,8 +31,10 @@ struct MltReport {
     std::uint32_t omc_cell_spp = 0; // in the cells the OMC part renders whole
     double omc_cell_rate = 0;
     bool kelemen = false;
-    float kelemen_pb = 0;
-    std::uint32_t strata = 1; // tiles of stratified MLT
+    float kelemen_pb = 0;                          // c b0: c the uniform samples per mutation
+    std::uint32_t restart_every = 0, restarts = 0; // --restart's steps; restarts so far
+    bool restart_samples = false;                  // the restarts' burn-in samples are large steps'
+    std::uint32_t strata = 1;                      // tiles of stratified MLT
     bool two_stage = false;
     std::uint32_t target_cells = 1;
     std::uint32_t omc_cells = 0; // cells the OMC part renders whole

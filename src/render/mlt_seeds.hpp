@@ -1,6 +1,7 @@
 // The streams of an MLT render, each a seed derived from the render's: the
 // burn-in's picks, the steps, the pixels' Sobol sequences (the burn-in's
-// samples and the split's OMC part) and the burn-in's film offset.
+// samples and the split's OMC part), the burn-in's film offset and the
+// rounding of the restarts' samples on the film.
 #pragma once
 #include "base/rng.hpp"
 
@@ -8,7 +9,13 @@
 
 namespace smallmlt {
 
-enum class MltStream : std::uint64_t { Pick = 2, Step = 3, Pixel = 4, FilmOffset = 5 };
+enum class MltStream : std::uint64_t {
+    Pick = 2,
+    Step = 3,
+    Pixel = 4,
+    FilmOffset = 5,
+    RestartSplat = 6 // the film's rounding of the restarts' samples
+};
 
 inline std::uint64_t mlt_seed(std::uint64_t seed, MltStream s) {
     return derive_seed(seed, std::uint64_t(s));

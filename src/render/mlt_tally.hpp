@@ -21,6 +21,9 @@ struct MltTally {
     // The burn-in's samples on the whole film, and their sum of squared
     // luminances.
     std::uint64_t burn_in_samples = 0;
+    // Of those, the restarts' (--restart), which with Kelemen's weights are
+    // also large steps' samples in large_film.
+    std::uint64_t restart_samples = 0;
     double burn_in_lum2 = 0;
     // With a split: the OMC part's samples per pixel (on the film, and on the
     // pixels of the cells it renders whole) and per pixel and channel its
@@ -48,6 +51,7 @@ struct MltTally {
         v(t.mutations);
         v(t.burn_in_lum);
         v(t.burn_in_samples);
+        v(t.restart_samples);
         v(t.large_lum);
         v(t.large);
         v(t.burn_in_lum2);
