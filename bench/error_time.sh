@@ -99,7 +99,7 @@ for size in $SIZES; do
         "mlt-strata32=MLT, split auto, strata of 32" \
         "mlt-fsfilm=MLT, film steps of a 64th of the film" "mlt-fs4=MLT, film steps of 4 pixels" "mlt-fs8=MLT, film steps of 8 pixels" \
         "mlt-fs16=MLT, film steps of 16 pixels" "mlt-ps64=MLT, path steps of a 64th, as Kelemen" \
-        "mlt-r8=MLT, restarts every 8 steps" \
+        "mlt-r0=MLT, no restarts" "mlt-r8=MLT, restarts every 8 steps" \
         "mlt-r16=MLT, restarts every 16 steps" \
         "mlt-r32=MLT, restarts every 32 steps"
     # the lower middle of the film at full size (cornell-water's floor under
