@@ -359,12 +359,14 @@ TEST(MltSplat, RestartedStratifiedImageMatchesTheTarget) {
 
 // --restart auto: every 16 steps where the chains are at least the film's
 // pixels and a restart's samples are large steps' (Kelemen's weights with
-// burn-in), else never; a number is kept. Then in renders: the known target
-// at 16x16 (256 pixels) with 1,024 chains restarts every 16 steps and
-// splats its restarts' samples, at 64x64 (4,096 pixels) it never restarts.
+// burn-in), else never; a number is kept, and the default is never. Then in
+// renders: the known target at 16x16 (256 pixels) with 1,024 chains
+// restarts every 16 steps and splats its restarts' samples, at 64x64 (4,096
+// pixels) it never restarts.
 TEST(MltRestart, AutoRestartsWhereTheChainsAreAtLeastThePixels) {
+    EXPECT_EQ(MltOptions().restart, 0u) << "the default";
     MltOptions opt;
-    EXPECT_EQ(opt.restart, kRestartAuto) << "the default";
+    opt.restart = kRestartAuto;
     EXPECT_EQ(restart_steps(opt, 16384, 16384), kRestartAutoSteps);
     EXPECT_EQ(restart_steps(opt, 16383, 16384), 0u);
     MltOptions expected = opt;
@@ -381,6 +383,7 @@ TEST(MltRestart, AutoRestartsWhereTheChainsAreAtLeastThePixels) {
     for (std::uint32_t side : {16u, 64u}) {
         DeviceScene ds = test::layout_only_scene({}, side, side);
         MltOptions o;
+        o.restart = kRestartAuto;
         o.split = Split::None;
         o.threads = 1024;
         o.burn_in_iters = 4;

@@ -306,6 +306,7 @@ TEST(MpiRender, KelemenRanksWeighWithOneB0) {
     opt.threads = 256;
     opt.burn_in_iters = 2; // few samples: the ranks' own b differ
     opt.omc_cells = false; // cornell's one cell would go to the OMC part whole: no b0
+    opt.restart = kRestartAuto;
     Exchange ex(2);
     std::vector<float> pb;
     std::uint64_t lum = 0, samples = 0;
@@ -326,8 +327,8 @@ TEST(MpiRender, KelemenRanksWeighWithOneB0) {
         if (ex.complete) break;
     }
     ASSERT_TRUE(ex.complete);
-    // 256 chains on 256 pixels: --restart auto restarts every 16 steps, from
-    // 2 rounds, so c is p and 2/16 restart samples per mutation.
+    // With --restart auto, 256 chains on 256 pixels restart every 16 steps
+    // from 2 rounds: c is p and 2/16 restart samples per mutation.
     const double c = double(large_step_of(opt)) + double(opt.burn_in_iters) / kRestartAutoSteps;
     const float want = float(c * mlt_b(lum, samples));
     std::printf("c b0: rank 0 %.6g, rank 1 %.6g, of the union %.6g\n", pb[0], pb[1], want);

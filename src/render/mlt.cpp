@@ -224,18 +224,25 @@ std::unique_ptr<OmcSchedule> MltRenderer::make_omc_part(Split split) const {
         opt_.threads, opt_.omc_effort);
 }
 
-void MltRenderer::restart_chains() {
-    ++restarts_;
-    // The restart's rounds on a film of their own: not the Sobol points
+void MltRenderer::restart_work(bool restart) {
+    // The next restart's rounds spread over the steps before it, B j / R of
+    // them by its j-th step, on a film of their own: not the Sobol points
     // the OMC part goes on with.
-    BurnInFilm film =
-        smallmlt::burn_in_film(derive_seed(mlt_seed(opt_.seed, MltStream::Pixel), restarts_),
-                               derive_seed(mlt_seed(opt_.seed, MltStream::FilmOffset), restarts_),
-                               std::uint32_t(pixels()), opt_.threads);
-    burn_in_.restart(plan_, scene_, target_, film,
-                     MltBurnIn::Chains{state_, stats_, picks_, chains()}, grid_, strata_,
-                     opt_.burn_in_iters, film_);
-    init_chains(film);
+    const std::uint64_t every = opt_.restart, rounds = opt_.burn_in_iters,
+                        j = (steps_run_ - 1) % every + 1;
+    if (!restart_film_)
+        restart_film_ = smallmlt::burn_in_film(
+            derive_seed(mlt_seed(opt_.seed, MltStream::Pixel), restarts_ + 1),
+            derive_seed(mlt_seed(opt_.seed, MltStream::FilmOffset), restarts_ + 1),
+            std::uint32_t(pixels()), opt_.threads);
+    const MltBurnIn::Chains chains{state_, stats_, picks_, this->chains()};
+    burn_in_.restart_rounds(plan_, scene_, target_, *restart_film_, chains, grid_, strata_,
+                            std::uint32_t(rounds * j / every - rounds * (j - 1) / every), film_);
+    if (!restart) return;
+    ++restarts_;
+    burn_in_.restart_picks(chains, strata_);
+    init_chains(*restart_film_);
+    restart_film_.reset();
 }
 
 void MltRenderer::init_chains(const BurnInFilm& film) {
@@ -276,7 +283,7 @@ void MltRenderer::step(std::uint32_t n) {
                 owed(MLT_OWED_FLUSH);
                 film_.drain();
             }
-            if (restart) restart_chains();
+            if (opt_.restart) restart_work(restart);
         }
         if (omc_) omc_->after_step(chains, [this] { return split_costs(); });
     }

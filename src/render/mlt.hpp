@@ -23,6 +23,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -140,9 +141,10 @@ class MltRenderer : public Integrator {
     // What each tile's large steps weigh, once the target is fixed: their
     // density q on its chains' part and, with Kelemen's weights, p q b0.
     void set_stratum_weights(RankGroup& ranks);
-    // --restart, once the chains have splatted what they owe: every chain
-    // starts again at a pick of fresh burn-in rounds.
-    void restart_chains();
+    // --restart, after each step: the next restart's share of burn-in
+    // rounds and, where `restart` (the chains have splatted what they owe),
+    // every chain's new start among them.
+    void restart_work(bool restart);
     // The tests' view of the device's buffers and program, for their probes
     // (test/test_support.hpp).
     friend struct MltInspect;
@@ -161,6 +163,7 @@ class MltRenderer : public Integrator {
     StrataBuffer strata_;     // the tiles, the groups' tiles and p b0 per tile
     BurnInFilm burn_in_film_; // where the burn-in's samples lie on the film
     std::uint32_t restarts_ = 0;
+    std::optional<BurnInFilm> restart_film_; // where the next restart's rounds lie
     MltBurnIn burn_in_;
     MltFilm film_;
     Split split_;

@@ -175,26 +175,33 @@ void MltBurnIn::fresh_picks(const Chains& chains) {
     ++rounds_;
 }
 
-void MltBurnIn::restart(const MemoryPlan& plan, const SceneBuffers& scene, TargetBuffer& target,
-                        const BurnInFilm& film, const Chains& chains, const StrataGrid& grid,
-                        StrataBuffer& strata, std::uint32_t rounds, MltFilm& image) {
-    if (!opt_.burn_in) return fresh_picks(chains);
+void MltBurnIn::restart_rounds(const MemoryPlan& plan, const SceneBuffers& scene,
+                               TargetBuffer& target, const BurnInFilm& film, const Chains& chains,
+                               const StrataGrid& grid, const StrataBuffer& strata,
+                               std::uint32_t rounds, MltFilm& image) {
+    if (!opt_.burn_in || rounds == 0) return;
     const std::uint32_t m = opt_.threads, drain_every = image.plan().steps_per_drain;
     const Round r(cl_, plan, scene, target, film, chains, grid, strata, image, keeps_parts(),
                   kelemen_in_force(opt_));
-    StartPicks picks(film, scene.frame.width, scene.frame.height, grid);
+    if (!pool_) pool_.emplace(film, scene.frame.width, scene.frame.height, grid);
+    host_.resize(m);
     for (std::uint32_t k = 0; k < rounds; ++k, ++rounds_) {
         sample_round(r, rounds_, false, sums_);
         sums_.samples += m;
         sums_.restart_samples += m;
-        picks.add_round(rounds_, host_);
-        // A round splats at most what a step does; the steps after the
-        // restart find the film drained.
+        pool_->add_round(rounds_, host_);
+        // A round splats at most what a step does; the next step finds the
+        // film drained.
         if (r.splat && drain_every && ((k + 1) % drain_every == 0 || k + 1 == rounds))
             image.drain();
     }
     sums_.update_variance();
-    write_picks(picks, chains, strata);
+}
+
+void MltBurnIn::restart_picks(const Chains& chains, const StrataBuffer& strata) {
+    if (!opt_.burn_in) return fresh_picks(chains);
+    write_picks(*pool_, chains, strata);
+    pool_.reset();
 }
 
 void BurnInSums::update_variance() {

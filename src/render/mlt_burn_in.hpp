@@ -18,6 +18,7 @@
 #include "render/target_buffer.hpp"
 
 #include <cstdint>
+#include <optional>
 
 namespace smallmlt {
 
@@ -74,16 +75,20 @@ class MltBurnIn {
              TargetBuffer& target, const BurnInFilm& film, const Chains& chains,
              const StrataGrid& grid, StrataBuffer& strata, MltFilm& image);
 
-    // Draws every chain's start anew (--restart): `rounds` more rounds of
-    // the burn-in, numbered after every round so far and placed on the film
-    // by `film`, from which each chain picks as run() did; their samples add
-    // to b's sums (and so to each tile's B), not to the parts, and with
-    // Kelemen's weights they are large steps' samples in `image`'s large
-    // steps' layer (drained as its plan says). Without burn-in, fresh
-    // samples of a round of their own.
-    void restart(const MemoryPlan& plan, const SceneBuffers& scene, TargetBuffer& target,
-                 const BurnInFilm& film, const Chains& chains, const StrataGrid& grid,
-                 StrataBuffer& strata, std::uint32_t rounds, MltFilm& image);
+    // The rounds of the next restart (--restart), a few at a time: `rounds`
+    // more rounds of the burn-in, numbered after every round so far and
+    // placed on the film by `film` (the same film until restart_picks),
+    // added to the pool the chains will pick from. Their samples add to b's
+    // sums (and so to each tile's B), not to the parts, and with Kelemen's
+    // weights they are large steps' samples in `image`'s large steps' layer,
+    // which is then drained. Nothing without burn-in.
+    void restart_rounds(const MemoryPlan& plan, const SceneBuffers& scene, TargetBuffer& target,
+                        const BurnInFilm& film, const Chains& chains, const StrataGrid& grid,
+                        const StrataBuffer& strata, std::uint32_t rounds, MltFilm& image);
+    // Draws every chain's start anew from the pool of restart_rounds, as
+    // run() did, and empties the pool; without burn-in, fresh samples of a
+    // round of their own.
+    void restart_picks(const Chains& chains, const StrataBuffer& strata);
     const BurnInSums& sums() const { return sums_; }
     // Per tile, B of every rank's burn-in samples (a collective; the same on
     // every rank): b0, the normalization Kelemen's weights take.
@@ -144,7 +149,8 @@ class MltBurnIn {
     BurnInSums sums_;
     double omc_variance_ = 0, cell_variance_ = 0, mlt_part_b_ = 0;
     SplitEvidence evidence_;
-    std::uint32_t rounds_ = 0; // rounds run, those of restarts included
+    std::uint32_t rounds_ = 0;       // rounds run, those of restarts included
+    std::optional<StartPicks> pool_; // the next restart's rounds so far
     std::vector<float> host_, host_omc_;
     std::vector<double> round_lum_;
 };

@@ -33,7 +33,7 @@ constexpr std::uint32_t kFilmStepFloorPixels = 4;
 constexpr std::uint32_t kDefaultFilmStep = kFilmStepAuto;
 // --restart auto (restart_steps).
 constexpr std::uint32_t kRestartAuto = 0xFFFFFFFFu;
-constexpr std::uint32_t kDefaultRestart = kRestartAuto;
+constexpr std::uint32_t kDefaultRestart = 0;
 // --path-step: the path numbers' largest small step is 1/kDefaultPathStep of
 // their unit interval, half Kelemen's 1/64 (doc/RESULTS.md, "Path numbers'
 // steps half as wide"). At most 1/1024, so that the smallest step, 1/(16 N),
@@ -117,7 +117,7 @@ struct MltOptions {
     // power of two, the kernels' MLT_PATH_STEP_LOG2 (cl/sampling/sample_chain.cl).
     std::uint32_t path_step = kDefaultPathStep;
     // Every `restart` steps, each chain starts again at a pick of
-    // burn_in_iters fresh burn-in rounds (MltBurnIn::restart): more, shorter
+    // burn_in_iters fresh burn-in rounds (MltBurnIn::restart_rounds): more, shorter
     // chains in the same memory. 0: never; kRestartAuto: restart_steps's rule.
     std::uint32_t restart = kDefaultRestart;
 };
