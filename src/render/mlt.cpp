@@ -172,12 +172,8 @@ std::vector<double> MltRenderer::restart_rate(RankGroup& ranks) const {
     // all threads, over every rank, so that every rank weighs with one c.
     std::vector<double> threads(tiles + 1, 0.0);
     const std::vector<std::uint32_t>& group_tile = strata_.group_tiles();
-    for (std::size_t g = 0; g < group_tile.size(); ++g) {
-        const std::uint64_t first = g * kDefaultWorkGroup;
-        if (first < opt_.threads)
-            threads[group_tile[g]] +=
-                double(std::min<std::uint64_t>(kDefaultWorkGroup, opt_.threads - first));
-    }
+    for (std::size_t g = 0; g < group_tile.size(); ++g)
+        threads[group_tile[g]] += double(group_threads(g));
     threads[tiles] = opt_.threads;
     ranks.sum_all(threads);
     for (std::uint32_t t = 0; t < tiles; ++t)

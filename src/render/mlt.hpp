@@ -186,6 +186,8 @@ class MltRenderer : public Integrator {
     // Adds each tile's mutations and large steps (from its work-groups' rows
     // of counters) and its burn-in sums to t.
     void tile_counts(MltTally& t) const;
+    // The threads of work-group g (the last may be partial; 0 past them).
+    std::uint64_t group_threads(std::size_t g) const;
     // B per tile from a tally's sums (mlt_tile_b).
     std::vector<double> tile_b_of(const MltTally& t) const;
     // Runs mlt_owed in `mode` (MLT_OWED_*, cl/core/shared_types.h).

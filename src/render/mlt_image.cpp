@@ -42,6 +42,12 @@ MltTally MltRenderer::mlt_tally() const {
     return t;
 }
 
+std::uint64_t MltRenderer::group_threads(std::size_t g) const {
+    const std::uint64_t first = g * kDefaultWorkGroup;
+    return first < opt_.threads ? std::min<std::uint64_t>(kDefaultWorkGroup, opt_.threads - first)
+                                : 0;
+}
+
 void MltRenderer::tile_counts(MltTally& t) const {
     // Each group's row of counters and its threads go to its tile.
     std::vector<std::uint64_t> rows(stats_.bytes() / sizeof(cl_ulong));
@@ -49,11 +55,7 @@ void MltRenderer::tile_counts(MltTally& t) const {
     const std::vector<std::uint32_t>& group_tile = strata_.group_tiles();
     for (std::size_t g = 0; g < group_tile.size(); ++g) {
         const std::uint32_t tile = group_tile[g];
-        const std::uint64_t first = g * kDefaultWorkGroup;
-        const std::uint64_t threads =
-            first < opt_.threads ? std::min<std::uint64_t>(kDefaultWorkGroup, opt_.threads - first)
-                                 : 0;
-        t.mutations[tile] += std::uint64_t(steps_run_) * threads;
+        t.mutations[tile] += std::uint64_t(steps_run_) * group_threads(g);
         t.large_lum[tile] += rows[g * MLT_STAT_COUNT + MLT_STAT_LARGE_LUM];
         t.large[tile] += rows[g * MLT_STAT_COUNT + MLT_STAT_LARGE];
     }
