@@ -76,13 +76,11 @@ void MltBurnIn::sample_round(const Round& r, std::uint32_t it, bool parts, BurnI
     }
 }
 
-MltBurnIn::Round::Round(const ClContext& cl, const MemoryPlan& plan, const SceneBuffers& scene,
-                        TargetBuffer& target, const BurnInFilm& film, const Chains& chains,
-                        const StrataGrid& grid, const StrataBuffer& strata, MltFilm& image,
-                        bool parts, bool splat)
-    : scene(scene), target(target), film(film), chains(chains), grid(grid), strata(strata),
-      image(image), splat(splat), lum(cl, CL_MEM_READ_WRITE, plan.bytes(Buffer::Luminance)),
-      omc(parts ? ClBuffer(cl, CL_MEM_READ_WRITE, plan.bytes(Buffer::OmcSamples)) : ClBuffer()) {}
+void MltBurnIn::allocate_rounds(const MemoryPlan& plan) {
+    if (lum_.get()) return;
+    lum_ = ClBuffer(cl_, CL_MEM_READ_WRITE, plan.bytes(Buffer::Luminance));
+    if (keeps_parts()) omc_ = ClBuffer(cl_, CL_MEM_READ_WRITE, plan.bytes(Buffer::OmcSamples));
+}
 
 void MltBurnIn::run(RankGroup& ranks, const MemoryPlan& plan, const SceneBuffers& scene,
                     TargetBuffer& target, const BurnInFilm& film, const Chains& chains,
@@ -97,7 +95,8 @@ void MltBurnIn::run(RankGroup& ranks, const MemoryPlan& plan, const SceneBuffers
     // as many tripled the error).
     const bool two_stage = opt_.target == Target::TwoStage, omc = omc_cells_in_force(opt_);
     const std::uint32_t first = omc ? omc_cell_rounds(opt_) : two_stage ? iters / 2 : 0;
-    const Round r(cl_, plan, scene, target, film, chains, grid, strata, image, parts, false);
+    allocate_rounds(plan);
+    const Round r{scene, target, film, chains, grid, strata, image, false, lum_, omc_};
     const std::uint32_t tiles = grid.count();
     std::optional<StartPicks> picks;
     picks.emplace(film, scene.frame.width, scene.frame.height, grid);
@@ -181,8 +180,9 @@ void MltBurnIn::restart_rounds(const MemoryPlan& plan, const SceneBuffers& scene
                                std::uint32_t rounds, MltFilm& image) {
     if (!opt_.burn_in || rounds == 0) return;
     const std::uint32_t m = opt_.threads, drain_every = image.plan().steps_per_drain;
-    const Round r(cl_, plan, scene, target, film, chains, grid, strata, image, keeps_parts(),
-                  kelemen_in_force(opt_));
+    allocate_rounds(plan);
+    const Round r{scene, target, film, chains, grid, strata, image, kelemen_in_force(opt_),
+                  lum_,  omc_};
     if (!pool_) pool_.emplace(film, scene.frame.width, scene.frame.height, grid);
     host_.resize(m);
     for (std::uint32_t k = 0; k < rounds; ++k, ++rounds_) {

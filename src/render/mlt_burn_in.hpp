@@ -112,12 +112,8 @@ class MltBurnIn {
     const SplitEvidence& split_evidence() const { return evidence_; }
 
   private:
-    // What the rounds of one run() or restart() share.
+    // What the rounds of one run() or restart_rounds() share.
     struct Round {
-        Round(const ClContext& cl, const MemoryPlan& plan, const SceneBuffers& scene,
-              TargetBuffer& target, const BurnInFilm& film, const Chains& chains,
-              const StrataGrid& grid, const StrataBuffer& strata, MltFilm& image, bool parts,
-              bool splat);
         const SceneBuffers& scene;
         TargetBuffer& target;
         const BurnInFilm& film;
@@ -126,8 +122,11 @@ class MltBurnIn {
         const StrataBuffer& strata;
         MltFilm& image;
         bool splat; // the samples go to image's large steps' layer
-        ClBuffer lum, omc;
+        const ClBuffer &lum, &omc;
     };
+    // lum_ and omc_, allocated once: the plan counts them for the whole
+    // render, and the restarts' rounds reuse them.
+    void allocate_rounds(const MemoryPlan& plan);
     void sample_round(const Round& r, std::uint32_t it, bool parts, BurnInSums& s);
     // Fixes the target from the parts so far (TargetBuffer::fix); where
     // cells go to the OMC part, those parts are dropped. True where the
@@ -153,6 +152,8 @@ class MltBurnIn {
     std::optional<StartPicks> pool_; // the next restart's rounds so far
     std::vector<float> host_, host_omc_;
     std::vector<double> round_lum_;
+    // A round's luminances, and its samples' parts where keeps_parts().
+    ClBuffer lum_, omc_;
 };
 
 } // namespace smallmlt
