@@ -361,8 +361,11 @@ TEST(MltSplat, RestartedStratifiedImageMatchesTheTarget) {
 // pixels and a restart's samples are large steps' (Kelemen's weights with
 // burn-in), else never; a number is kept, and the default is never. Then in
 // renders: the known target at 16x16 (256 pixels) with 1,024 chains
-// restarts every 16 steps and splats its restarts' samples, at 64x64 (4,096
-// pixels) it never restarts.
+// restarts every 16 steps, splats its restarts' samples and takes
+// kDefaultLargeStepRestart's large steps; at 64x64 (4,096 pixels) it never
+// restarts and takes kDefaultLargeStepKelemen's. The share of large steps
+// among 40,960 mutations is within 0.01 of its probability: 6.6 standard
+// deviations of a binomial at 0.1, 4.4 at 0.3 (two-sided 1e-5).
 TEST(MltRestart, AutoRestartsWhereTheChainsAreAtLeastThePixels) {
     EXPECT_EQ(MltOptions().restart, 0u) << "the default";
     MltOptions opt;
@@ -396,6 +399,9 @@ TEST(MltRestart, AutoRestartsWhereTheChainsAreAtLeastThePixels) {
         EXPECT_EQ(r.restart_every, side == 16 ? kRestartAutoSteps : 0u) << side;
         EXPECT_EQ(r.restarts, side == 16 ? 2u : 0u) << side;
         EXPECT_EQ(r.restart_samples, side == 16) << side;
+        const double large = double(r.stats.large) / double(r.stats.mutations);
+        EXPECT_NEAR(large, side == 16 ? kDefaultLargeStepRestart : kDefaultLargeStepKelemen, 0.01)
+            << side;
     }
 }
 

@@ -328,8 +328,12 @@ TEST(MpiRender, KelemenRanksWeighWithOneB0) {
     }
     ASSERT_TRUE(ex.complete);
     // With --restart auto, 256 chains on 256 pixels restart every 16 steps
-    // from 2 rounds: c is p and 2/16 restart samples per mutation.
-    const double c = double(large_step_of(opt)) + double(opt.burn_in_iters) / kRestartAutoSteps;
+    // from 2 rounds: c is p (a restarting render's) and 2/16 restart samples
+    // per mutation.
+    MltOptions restarting = opt;
+    restarting.restart = kRestartAutoSteps;
+    const double c =
+        double(large_step_of(restarting)) + double(opt.burn_in_iters) / kRestartAutoSteps;
     const float want = float(c * mlt_b(lum, samples));
     std::printf("c b0: rank 0 %.6g, rank 1 %.6g, of the union %.6g\n", pb[0], pb[1], want);
     EXPECT_GT(want, 0.0f);

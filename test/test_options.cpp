@@ -119,6 +119,16 @@ TEST(Options, LargeStepDefaultDependsOnBurnInAndWeightsAlike) {
         EXPECT_EQ(large_step_of(m), default_large_step(c.burn_in, c.kelemen));
     }
     EXPECT_EQ(large_step_of(parse("render s.scene --large-step 0.25").render.mlt), 0.25f);
+    // Restarts lower it where their samples are large steps' (burn-in,
+    // Kelemen's weights); auto only once resolved to steps.
+    EXPECT_EQ(large_step_of(parse("render s.scene --restart 16").render.mlt),
+              kDefaultLargeStepRestart);
+    EXPECT_EQ(large_step_of(parse("render s.scene --restart auto").render.mlt),
+              kDefaultLargeStepKelemen);
+    EXPECT_EQ(large_step_of(parse("render s.scene --restart 16 --weights expected").render.mlt),
+              kDefaultLargeStepBurnIn);
+    EXPECT_EQ(large_step_of(parse("render s.scene --restart 16 --large-step 0.25").render.mlt),
+              0.25f);
 }
 
 // A flag render and budget share is one entry and sets the same fields.
@@ -192,7 +202,8 @@ TEST(Options, HelpListsEveryFlagOfTheTable) {
     EXPECT_NE(help.find("maximum bounces, 0..64"), std::string::npos);
     EXPECT_EQ(flag_help(*find_flag("--large-step")),
               "probability that a mutation draws a whole new path (default 0.3 with burn-in, 0.1 "
-              "with burn-in and --weights expected, 0.5 without burn-in)");
+              "with burn-in and restarts, 0.1 with burn-in and --weights expected, 0.5 without "
+              "burn-in)");
 }
 
 // Every alternative a choice's syntax shows is one its setter takes.

@@ -154,6 +154,7 @@ const std::vector<Flag> kRenderFlags = {
 
 std::string large_step_defaults() {
     return number(default_large_step(true, true)) + " with burn-in, " +
+           number(default_large_step(true, true, true)) + " with burn-in and restarts, " +
            number(default_large_step(true, false)) + " with burn-in and --weights expected, " +
            number(default_large_step(false, true)) + " without burn-in";
 }

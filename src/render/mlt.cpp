@@ -96,7 +96,7 @@ MltRenderer::MltRenderer(const ClContext& cl, const DeviceScene& ds, const MltOp
       burn_in_film_(smallmlt::burn_in_film(mlt_seed(opt.seed, MltStream::Pixel),
                                            mlt_seed(opt.seed, MltStream::FilmOffset),
                                            std::uint32_t(pixels()), opt.threads)),
-      burn_in_(cl, program_.p, opt, pixels()),
+      burn_in_(cl, program_.p, opt_, pixels()),
       film_(cl, pixels(),
             plan_mlt_film(pixels(), opt.threads, max_alloc(cl, opt), opt.film_atomics64,
                           opt.film_pass_mutations, mlt_chain_shape(opt).film_layers)) {

@@ -40,6 +40,8 @@ class MltRenderer : public Integrator {
   public:
     MltRenderer(const ClContext& cl, const DeviceScene& ds, const MltOptions& opt,
                 const MltTestHooks& hooks = {});
+    MltRenderer(const MltRenderer&) = delete; // burn_in_ refers to opt_
+    MltRenderer& operator=(const MltRenderer&) = delete;
 
     // Burn-in, the split (Split::Auto decides here, every rank alike) and
     // the chains' starts.

@@ -64,7 +64,9 @@ class MltBurnIn {
         std::uint32_t count;
     };
     // `program` holds mlt_luminance and the picker's kernels; the parts per
-    // pixel are kept for `pixels` pixels where `opt` needs them.
+    // pixel are kept for `pixels` pixels where `opt` needs them. `opt` is
+    // the renderer's and outlives this (its --restart auto resolved by
+    // MltRenderer::prepare before run()).
     MltBurnIn(const ClContext& cl, cl_program program, const MltOptions& opt, std::uint64_t pixels);
     // Runs every round on the rank (ranks meet only where the target is
     // fixed). The first round that estimates b deals the chains'
@@ -142,7 +144,7 @@ class MltBurnIn {
 
     const ClContext& cl_;
     cl_program program_;
-    MltOptions opt_;
+    const MltOptions& opt_;
     ClKernel k_lum_;
     BurnInParts parts_;
     BurnInSums sums_;

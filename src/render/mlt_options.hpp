@@ -21,7 +21,10 @@ constexpr std::uint32_t kDefaultStuckRun = 1000;
 // Defaults chosen by the benches of doc/RESULTS.md: Kelemen's weights, with
 // which large steps pay more often than with expected values alone.
 constexpr bool kDefaultKelemen = true;
-constexpr float kDefaultLargeStepKelemen = 0.3f;  // with burn-in and Kelemen's weights
+constexpr float kDefaultLargeStepKelemen = 0.3f; // with burn-in and Kelemen's weights
+// and with restarts too, whose samples are then the large steps' as well
+// (doc/RESULTS.md, "Large steps beside restarts").
+constexpr float kDefaultLargeStepRestart = 0.1f;
 constexpr float kDefaultLargeStepBurnIn = 0.1f;   // with burn-in and expected values
 constexpr float kDefaultLargeStepNoBurnIn = 0.5f; // the paper's baseline without
 // --film-step: 0 is Kelemen's step, a 64th of the film; auto is the larger of
@@ -122,16 +125,19 @@ struct MltOptions {
     std::uint32_t restart = kDefaultRestart;
 };
 
-// The large step's probability where none is given: it depends on burn-in
-// and the weights.
-constexpr float default_large_step(bool burn_in, bool kelemen) {
-    return !burn_in  ? kDefaultLargeStepNoBurnIn
-           : kelemen ? kDefaultLargeStepKelemen
-                     : kDefaultLargeStepBurnIn;
+// The large step's probability where none is given: it depends on burn-in,
+// the weights and whether chains restart.
+constexpr float default_large_step(bool burn_in, bool kelemen, bool restarts = false) {
+    return !burn_in   ? kDefaultLargeStepNoBurnIn
+           : !kelemen ? kDefaultLargeStepBurnIn
+           : restarts ? kDefaultLargeStepRestart
+                      : kDefaultLargeStepKelemen;
 }
-// The large step's probability of a render of `opt`.
+// The large step's probability of a render of `opt`; --restart auto counts
+// as restarting once resolved to steps (MltRenderer::prepare), not before.
 inline float large_step_of(const MltOptions& opt) {
-    return opt.large_step.value_or(default_large_step(opt.burn_in, opt.kelemen));
+    const bool restarts = opt.restart != 0 && opt.restart != kRestartAuto;
+    return opt.large_step.value_or(default_large_step(opt.burn_in, opt.kelemen, restarts));
 }
 
 // --film-step's pixels asked for (0: film_step_share 64ths of the film, with
