@@ -359,7 +359,7 @@ TEST(MltSplat, RestartedStratifiedImageMatchesTheTarget) {
 
 // --restart auto: every 16 steps where the chains are at least the film's
 // pixels and a restart's samples are large steps' (Kelemen's weights with
-// burn-in), else never; a number is kept, and the default is never. Then in
+// burn-in), else never; a number is kept, and auto is the default. Then in
 // renders: the known target at 16x16 (256 pixels) with 1,024 chains
 // restarts every 16 steps, splats its restarts' samples and takes
 // kDefaultLargeStepRestart's large steps; at 64x64 (4,096 pixels) it never
@@ -367,7 +367,7 @@ TEST(MltSplat, RestartedStratifiedImageMatchesTheTarget) {
 // among 40,960 mutations is within 0.01 of its probability: 6.6 standard
 // deviations of a binomial at 0.1, 4.4 at 0.3 (two-sided 1e-5).
 TEST(MltRestart, AutoRestartsWhereTheChainsAreAtLeastThePixels) {
-    EXPECT_EQ(MltOptions().restart, 0u) << "the default";
+    EXPECT_EQ(MltOptions().restart, kRestartAuto) << "the default";
     MltOptions opt;
     opt.restart = kRestartAuto;
     EXPECT_EQ(restart_steps(opt, 16384, 16384), kRestartAutoSteps);
