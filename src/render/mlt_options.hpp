@@ -22,7 +22,7 @@ constexpr std::uint32_t kDefaultStuckRun = 1000;
 // which large steps pay more often than with expected values alone.
 constexpr bool kDefaultKelemen = true;
 constexpr float kDefaultLargeStepKelemen = 0.3f; // with burn-in and Kelemen's weights
-// and with restarts too, whose samples are then the large steps' as well
+// With those and restarts, whose samples are large steps' too
 // (doc/RESULTS.md, "Large steps beside restarts").
 constexpr float kDefaultLargeStepRestart = 0.1f;
 constexpr float kDefaultLargeStepBurnIn = 0.1f;   // with burn-in and expected values
@@ -35,7 +35,7 @@ constexpr std::uint32_t kFilmStepAutoShare = 2;
 constexpr std::uint32_t kFilmStepFloorPixels = 4;
 constexpr std::uint32_t kDefaultFilmStep = kFilmStepAuto;
 // --restart auto (restart_steps), the default: at 128x128 its block error
-// is 1.6-2.1 times lower than never restarting's (doc/RESULTS.md, "Large
+// is 1.6-2.0 times lower than never restarting's (doc/RESULTS.md, "Large
 // steps beside restarts").
 constexpr std::uint32_t kRestartAuto = 0xFFFFFFFFu;
 constexpr std::uint32_t kDefaultRestart = kRestartAuto;
