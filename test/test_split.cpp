@@ -388,7 +388,12 @@ TEST(Split, ChainsRunBesideABrightLightSeenDirectly) {
     MltStats s = mlt.stats();
     const OmcPartTracer& part = *MltInspect::omc_part(mlt);
     double omc_rays_per_step = mlt.omc_rate() * double(part.rays()) / double(part.spp());
-    double chain_rays_per_step = double(s.rays) / 4;
+    // The chains' time: their mutations and the restarts' rounds (--restart
+    // auto restarts here: 16,384 chains on 14,400 pixels), whose paths cost
+    // about a mutation's rays.
+    MltOptions resolved = opt;
+    resolved.restart = restart_steps(opt, mlt.chains(), mlt.pixels());
+    double chain_rays_per_step = double(s.rays) / 4 * (1 + restart_rounds_per_step(resolved));
     std::printf("split %s, %llu mutations; OMC part %.1f spp per step, %.4g rays a step "
                 "against the chains' %.4g\n",
                 split_name(mlt.split()), static_cast<unsigned long long>(s.mutations),
@@ -397,4 +402,35 @@ TEST(Split, ChainsRunBesideABrightLightSeenDirectly) {
     EXPECT_EQ(s.mutations, 4u * opt.threads);
     EXPECT_GT(mlt.part_image(MltRenderer::Part::Mlt).mean_luminance(), 0.0);
     EXPECT_LE(omc_rays_per_step, 1.05 * chain_rays_per_step);
+}
+
+// The restarts' rounds (--restart R, B rounds: B / R paths a mutation, each
+// about a mutation's rays) are the chains' time: the rule then gives the
+// OMC part sqrt(1 + B / R) times the time per mutation it gives without
+// them (its optimum, split.hpp), and its floor and cap 1 + B / R times.
+// Same seed and large steps, so the same burn-in and first step.
+TEST(Split, RestartsCountAsTheChainsTime) {
+    DeviceScene ds = prepare_scene(test::scene("ajar", 64, 64));
+    auto rates = [&](std::uint32_t restart) {
+        MltOptions opt;
+        opt.threads = 4096;
+        opt.seed = 1;
+        opt.large_step = 0.1f;
+        opt.restart = restart;
+        MltRenderer mlt(test::cl(), ds, opt);
+        mlt.prepare();
+        mlt.step(1);
+        return std::make_pair(mlt.omc_rate(), mlt.omc_cell_rate());
+    };
+    const auto without = rates(0), with = rates(16);
+    const double u = 32.0 / 16;
+    std::printf("OMC part per step: film %.4g against %.4g without restarts, cells %.4g "
+                "against %.4g\n",
+                with.first, without.first, with.second, without.second);
+    ASSERT_GT(without.first, 0.0);
+    EXPECT_GE(with.first / without.first, std::sqrt(1 + u) * (1 - 1e-9));
+    EXPECT_LE(with.first / without.first, (1 + u) * (1 + 1e-9));
+    ASSERT_GT(without.second, 0.0) << "ajar's slit goes to the OMC part's cells";
+    EXPECT_GE(with.second / without.second, std::sqrt(1 + u) * (1 - 1e-9));
+    EXPECT_LE(with.second / without.second, (1 + u) * (1 + 1e-9));
 }

@@ -167,7 +167,8 @@ void MltRenderer::set_stratum_weights(RankGroup& ranks) {
 std::vector<double> MltRenderer::restart_rate(RankGroup& ranks) const {
     const std::uint32_t tiles = grid_.count();
     std::vector<double> q(tiles, 0.0);
-    if (!opt_.restart || !opt_.burn_in) return q;
+    const double rounds = restart_rounds_per_step(opt_);
+    if (rounds == 0) return q;
     // Each tile's threads (its work-groups', as tile_counts counts them) and
     // all threads, over every rank, so that every rank weighs with one c.
     std::vector<double> threads(tiles + 1, 0.0);
@@ -177,9 +178,7 @@ std::vector<double> MltRenderer::restart_rate(RankGroup& ranks) const {
     threads[tiles] = opt_.threads;
     ranks.sum_all(threads);
     for (std::uint32_t t = 0; t < tiles; ++t)
-        if (threads[t] > 0)
-            q[t] = double(opt_.burn_in_iters) * threads[tiles] * grid_.area(t, pixels()) /
-                   (double(opt_.restart) * threads[t]);
+        if (threads[t] > 0) q[t] = rounds * threads[tiles] * grid_.area(t, pixels()) / threads[t];
     return q;
 }
 
@@ -294,7 +293,9 @@ SplitCosts MltRenderer::split_costs() const {
     c.b = burn_in_.mlt_part_b();
     c.pixels = double(pixels());
     c.threads = double(opt_.threads);
-    c.mutation_rays = double(stats().rays) / c.threads;
+    // A mutation's share of the restarts' rounds is the chains' time too;
+    // their paths cost about what a mutation does.
+    c.mutation_rays = double(stats().rays) / c.threads * (1 + restart_rounds_per_step(opt_));
     return c;
 }
 

@@ -181,6 +181,13 @@ inline std::uint32_t restart_steps(const MltOptions& opt, std::uint64_t chains,
     if (opt.restart != kRestartAuto) return opt.restart;
     return kelemen_in_force(opt) && opt.burn_in && chains >= pixels ? kRestartAutoSteps : 0;
 }
+// The burn-in rounds, a path per thread each, that a step runs for the next
+// restart: B / R (MltRenderer::restart_work); 0 without restarts, or before
+// --restart auto is resolved.
+inline double restart_rounds_per_step(const MltOptions& opt) {
+    const bool restarts = opt.restart != 0 && opt.restart != kRestartAuto && opt.burn_in;
+    return restarts ? double(opt.burn_in_iters) / double(opt.restart) : 0.0;
+}
 
 // The OMC part's cells in force: asked for, with a split and burn-in rounds
 // to choose them from before the rounds that estimate b.

@@ -43,7 +43,11 @@ std::string split_defines(Split s);
 //   C = tau b^2 P^2 c_m: what the chains' film would have were its samples
 //       independent (pixel p is found by a fraction mu_p / (b P) of them), tau
 //       the chains' correlation (samples per independent one); c_m the rays
-//       of one mutation.
+//       of one mutation, with its share of the restarts' rounds (--restart:
+//       B / R paths, each about a mutation's rays). With restarts that take
+//       a share u / (1 + u) of the chains' time and leave their error as
+//       it was, t_o is then sqrt(1 + u) times what it is without: the
+//       optimum of A / t_o + C / t_m at equal time.
 // The OMC part then takes n_o = (t_o / t_m) T c_m / (P c_o) samples per
 // pixel per step of T threads. tau is measured (doc/RESULTS.md, "Split").
 // t_o / t_m is at most kOmcMaxTimeRatio: where the rule gives the OMC part
@@ -74,7 +78,7 @@ struct SplitCosts {
     double b = 0;             // the MLT part's mean luminance
     double pixels = 0;        // P
     double omc_rays = 0;      // c_o
-    double mutation_rays = 0; // c_m
+    double mutation_rays = 0; // c_m, with the restarts' share
     double threads = 0;       // T
     double cell_variance = 0; // V_c
     double cell_pixels = 0;   // P_c
