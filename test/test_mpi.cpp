@@ -327,9 +327,9 @@ TEST(MpiRender, KelemenRanksWeighWithOneB0) {
         if (ex.complete) break;
     }
     ASSERT_TRUE(ex.complete);
-    // With --restart auto, 256 chains on 256 pixels restart every 16 steps
-    // from 2 rounds: c is p (a restarting render's) and 2/16 restart samples
-    // per mutation.
+    // With --restart auto, 256 chains on 256 pixels restart every
+    // kRestartAutoSteps steps from 2 rounds: c is p (a restarting render's)
+    // and 2 / kRestartAutoSteps restart samples per mutation.
     MltOptions restarting = opt;
     restarting.restart = kRestartAutoSteps;
     const double c =
