@@ -135,11 +135,15 @@ constexpr float default_large_step(bool burn_in, bool kelemen, bool restarts = f
            : restarts ? kDefaultLargeStepRestart
                       : kDefaultLargeStepKelemen;
 }
-// The large step's probability of a render of `opt`; --restart auto counts
-// as restarting once resolved to steps (MltRenderer::prepare), not before.
+// Whether the chains of a render of `opt` restart: --restart auto counts
+// once resolved to steps (MltRenderer::prepare), not before.
+inline bool restarts_resolved(const MltOptions& opt) {
+    return opt.restart != 0 && opt.restart != kRestartAuto;
+}
+// The large step's probability of a render of `opt`.
 inline float large_step_of(const MltOptions& opt) {
-    const bool restarts = opt.restart != 0 && opt.restart != kRestartAuto;
-    return opt.large_step.value_or(default_large_step(opt.burn_in, opt.kelemen, restarts));
+    return opt.large_step.value_or(
+        default_large_step(opt.burn_in, opt.kelemen, restarts_resolved(opt)));
 }
 
 // --film-step's pixels asked for (0: film_step_share 64ths of the film, with
@@ -188,8 +192,8 @@ inline std::uint32_t restart_steps(const MltOptions& opt, std::uint64_t chains,
 // restart: B / R (MltRenderer::restart_work); 0 without restarts, or before
 // --restart auto is resolved.
 inline double restart_rounds_per_step(const MltOptions& opt) {
-    const bool restarts = opt.restart != 0 && opt.restart != kRestartAuto && opt.burn_in;
-    return restarts ? double(opt.burn_in_iters) / double(opt.restart) : 0.0;
+    return restarts_resolved(opt) && opt.burn_in ? double(opt.burn_in_iters) / double(opt.restart)
+                                                 : 0.0;
 }
 
 // The OMC part's cells in force: asked for, with a split and burn-in rounds
