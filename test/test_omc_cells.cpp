@@ -13,6 +13,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <numeric>
 
 using namespace smallmlt;
 
@@ -279,6 +280,68 @@ TEST(OmcCells, FurnaceIsRenderedWholeByTheOmcPart) {
     EXPECT_EQ(parts.mean(parts.rest), 0.0);
 }
 
+// Ajar at 32 x 32 with the direct split and 4,096 threads: at seed 5 two
+// of its 64 cells go to the OMC part (omc_cells on, the default).
+namespace {
+MltOptions ajar_with_cells() {
+    MltOptions opt = test::plain_mlt();
+    opt.threads = 4096;
+    opt.seed = 5;
+    opt.split = Split::Direct;
+    opt.omc_effort = 0.2;
+    return opt;
+}
+} // namespace
+
+// A restart's rounds are burn-in rounds: their paths in the OMC part's cells
+// are whole paths and join the cells' per-pixel samples, as the first
+// burn-in's do; elsewhere the OMC part keeps only its own. Ajar at 32 x 32
+// with and without --restart 4, the same seed: the same cells and the same
+// first burn-in, and with restarts each cell pixel's count grows by the
+// restarts' samples that landed there (each pixel gets its share of a
+// round, give or take one) and every other pixel's stays; the image's mean
+// stays within 3%.
+TEST(OmcCells, RestartsRoundsRenderTheCellsToo) {
+    DeviceScene ds = prepare_scene(test::scene("ajar", 32, 32));
+    MltOptions opt = ajar_with_cells();
+    std::vector<std::uint64_t> landed[2];
+    std::vector<bool> cell;
+    std::uint64_t restart_samples = 0;
+    double mean[2];
+    for (int on = 0; on < 2; ++on) {
+        opt.restart = on ? 4 : 0;
+        MltRenderer mlt(test::cl(), ds, opt);
+        mlt.prepare();
+        mlt.step(8);
+        const MltTally t = mlt.mlt_tally();
+        landed[on] = t.burn_in_landed;
+        mean[on] = mlt.image().mean_luminance();
+        if (on) {
+            restart_samples = t.restart_samples;
+            EXPECT_EQ(mlt.report().restarts, 2u);
+            for (std::uint32_t p = 0; p < 32 * 32; ++p)
+                cell.push_back(MltInspect::target(mlt).omc_pixel(p % 32, p / 32));
+        }
+    }
+    std::uint64_t in_cells = 0, cell_pixels = 0, elsewhere = 0;
+    for (std::uint32_t p = 0; p < 32 * 32; ++p) {
+        const std::uint64_t grew = landed[1][p] - landed[0][p];
+        (cell[p] ? in_cells : elsewhere) += grew;
+        cell_pixels += cell[p];
+    }
+    const double share = double(restart_samples) * double(cell_pixels) / (32 * 32);
+    std::printf("ajar, restarts every 4 steps: %llu of their samples, %llu in %llu cell pixels "
+                "(their share %.0f), %llu elsewhere; image %.4g against %.4g\n",
+                (unsigned long long)restart_samples, (unsigned long long)in_cells,
+                (unsigned long long)cell_pixels, share, (unsigned long long)elsewhere, mean[1],
+                mean[0]);
+    ASSERT_GT(cell_pixels, 0u) << "no cell went";
+    ASSERT_GT(restart_samples, 0u);
+    EXPECT_EQ(elsewhere, 0u);
+    EXPECT_NEAR(double(in_cells), share, double(cell_pixels) * (restart_samples / 4096));
+    EXPECT_NEAR(mean[1], mean[0], 0.03 * mean[0]);
+}
+
 // On ajar at 32 x 32 some cells go to the OMC part and the chains run on
 // the rest: their b leaves out what the OMC part renders, so b falls, and
 // the whole image's mean still agrees with the render without such cells
@@ -286,11 +349,7 @@ TEST(OmcCells, FurnaceIsRenderedWholeByTheOmcPart) {
 // render test checks each block).
 TEST(OmcCells, AjarSharesItsCellsAndKeepsItsLight) {
     DeviceScene ds = prepare_scene(test::scene("ajar", 32, 32));
-    MltOptions opt = test::plain_mlt();
-    opt.threads = 4096;
-    opt.seed = 5;
-    opt.split = Split::Direct;
-    opt.omc_effort = 0.2;
+    MltOptions opt = ajar_with_cells();
     double mean[2], b[2];
     for (int on = 0; on < 2; ++on) {
         opt.omc_cells = on;

@@ -28,6 +28,7 @@ struct MltInspect {
     static std::vector<float> weights(const MltRenderer& m) { return m.target_.read(); }
     static cl_program program(const MltRenderer& m) { return m.program_.p; }
     static const StrataBuffer& strata(const MltRenderer& m) { return m.strata_; }
+    static const TargetBuffer& target(const MltRenderer& m) { return m.target_; }
     // The split's OMC part (null without a split).
     static const OmcPartTracer* omc_part(const MltRenderer& m) {
         return m.omc_ ? &m.omc_->part() : nullptr;

@@ -256,9 +256,10 @@ const std::vector<Flag> kMltFlags = {
      },
      "every STEPS steps each chain starts again at a pick of --burn-in-iters fresh burn-in "
      "rounds (at a fresh sample without burn-in), whose samples are also large steps' under "
-     "Kelemen's weights: more, shorter chains, whose error is less correlated across the "
-     "film; 0: never ({range}); auto: every 8 steps where the chains are at least the "
-     "film's pixels and Kelemen's weights are in force, else never (default {default}; "
+     "Kelemen's weights and, in the OMC part's cells, its per-pixel samples: more, shorter "
+     "chains, whose error is less correlated across the film; 0: never ({range}); auto: "
+     "every 8 steps where the chains are at least the film's pixels and Kelemen's weights "
+     "are in force, else never (default {default}; "
      "doc/design.md, \"Restarts\")",
      0, 1 << 30, nullptr,
      [] {

@@ -61,10 +61,11 @@ SequenceStart burn_in_omc_start(const BurnInFilm& f, std::uint32_t pixels, std::
     return s;
 }
 
-void BurnInParts::add(const std::vector<float>& samples) {
+void BurnInParts::add(const std::vector<float>& samples, const std::vector<bool>* in) {
     for (std::size_t i = 0; i + 8 <= samples.size(); i += 8) {
         std::uint32_t pixel;
         std::memcpy(&pixel, &samples[i + 3], sizeof pixel);
+        if (in && !in->at(pixel)) continue;
         std::size_t at = 3 * std::size_t(pixel);
         ++count.at(pixel);
         for (int c = 0; c < 3; ++c) {

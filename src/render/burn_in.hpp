@@ -54,8 +54,9 @@ struct BurnInParts {
     explicit BurnInParts(std::uint64_t pixels = 0)
         : omc(3 * pixels, 0.0), rest(3 * pixels, 0.0), omc_y2(pixels, 0.0), rest_y2(pixels, 0.0),
           count(pixels, 0), behind(pixels, 0.0) {}
-    // Adds a round's paths, in sample order.
-    void add(const std::vector<float>& samples);
+    // Adds a round's paths, in sample order; with `in`, only those that
+    // landed in a pixel p with (*in)[p].
+    void add(const std::vector<float>& samples, const std::vector<bool>* in = nullptr);
     // V_o (or V_m) of split.hpp over all pixels (PixelVariance), from a
     // part's sums per pixel (`sums`, RGB; `y2`, squared luminances).
     double variance(const std::vector<double>& sums, const std::vector<double>& y2) const;

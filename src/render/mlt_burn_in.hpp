@@ -81,9 +81,10 @@ class MltBurnIn {
     // more rounds of the burn-in, numbered after every round so far and
     // placed on the film by `film` (the same film until restart_picks),
     // added to the pool the chains will pick from. Their samples add to b's
-    // sums (and so to each tile's B), not to the parts, and with Kelemen's
-    // weights they are large steps' samples in `image`'s large steps' layer,
-    // which is then drained. Nothing without burn-in.
+    // sums (and so to each tile's B); those in the OMC part's cells add to
+    // the parts, so their whole paths are the cells' per-pixel samples too;
+    // with Kelemen's weights they are large steps' samples in `image`'s
+    // large steps' layer, which is then drained. Nothing without burn-in.
     void restart_rounds(const MemoryPlan& plan, const SceneBuffers& scene, TargetBuffer& target,
                         const BurnInFilm& film, const Chains& chains, const StrataGrid& grid,
                         const StrataBuffer& strata, std::uint32_t rounds, MltFilm& image);
@@ -129,7 +130,9 @@ class MltBurnIn {
     // lum_ and omc_, allocated once: the plan counts them for the whole
     // render, and the restarts' rounds reuse them.
     void allocate_rounds(const MemoryPlan& plan);
-    void sample_round(const Round& r, std::uint32_t it, bool parts, BurnInSums& s);
+    // Which of a round's paths add to the parts.
+    enum class Parts { None, All, Cells };
+    void sample_round(const Round& r, std::uint32_t it, Parts parts, BurnInSums& s);
     // Fixes the target from the parts so far (TargetBuffer::fix); where
     // cells go to the OMC part, those parts are dropped. True where the
     // target changed (the two-stage weights, cells of weight 0): samples
@@ -154,6 +157,7 @@ class MltBurnIn {
     std::optional<StartPicks> pool_; // the next restart's rounds so far
     std::vector<float> host_, host_omc_;
     std::vector<double> round_lum_;
+    std::vector<bool> cell_pixels_; // per pixel: in an OMC part's cell
     // A round's luminances, and its samples' parts where keeps_parts().
     ClBuffer lum_, omc_;
 };
