@@ -189,11 +189,13 @@ void MltBurnIn::restart_rounds(const MemoryPlan& plan, const SceneBuffers& scene
     // samples there. Elsewhere the OMC part keeps its own: the restarts'
     // there raised cornell-water's and cornell-glass's error (doc/RESULTS.md,
     // "The restarts' rounds in the OMC part").
-    const std::uint32_t w = scene.frame.width, pixels = std::uint32_t(grid.pixel_tile.size());
     const Parts parts = keeps_parts() && target.omc_pixels() > 0 ? Parts::Cells : Parts::None;
-    cell_pixels_.assign(parts == Parts::Cells ? pixels : 0, false);
-    for (std::uint32_t p = 0; p < cell_pixels_.size(); ++p)
-        cell_pixels_[p] = target.omc_pixel(p % w, p / w);
+    if (parts == Parts::Cells && cell_pixels_.empty()) { // the cells stay after the burn-in
+        const std::uint32_t w = scene.frame.width, pixels = std::uint32_t(grid.pixel_tile.size());
+        cell_pixels_.resize(pixels);
+        for (std::uint32_t p = 0; p < pixels; ++p)
+            cell_pixels_[p] = target.omc_pixel(p % w, p / w);
+    }
     host_omc_.resize(parts == Parts::Cells ? 8 * std::size_t(m) : 0);
     for (std::uint32_t k = 0; k < rounds; ++k, ++rounds_) {
         sample_round(r, rounds_, parts, sums_);

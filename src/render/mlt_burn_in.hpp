@@ -157,7 +157,7 @@ class MltBurnIn {
     std::optional<StartPicks> pool_; // the next restart's rounds so far
     std::vector<float> host_, host_omc_;
     std::vector<double> round_lum_;
-    std::vector<bool> cell_pixels_; // per pixel: in an OMC part's cell
+    std::vector<bool> cell_pixels_; // per pixel: in an OMC part's cell (set at the first restart)
     // A round's luminances, and its samples' parts where keeps_parts().
     ClBuffer lum_, omc_;
 };
