@@ -405,6 +405,50 @@ TEST(MltRestart, AutoRestartsWhereTheChainsAreAtLeastThePixels) {
     }
 }
 
+// --restart auto where the chains are fewer than the pixels: restarts
+// every 16 steps after a burn-in whose brightest path took more than
+// kPileShare of the chains, else never. tiny-caustic at 64x64, 1,024
+// chains (a quarter of the pixels), 64 burn-in rounds: at seed 4 the
+// burn-in finds a path from the ceiling through the ball to the spark
+// (b +-21%) and starts a pile of chains on it; at seed 3 it finds none, and
+// its brightest path takes about one chain. A number given is kept.
+TEST(MltRestart, AutoRestartsWhereOnePathHoldsAPileOfChains) {
+    MltOptions opt;
+    EXPECT_EQ(restart_pile_steps(opt, 2 * kPileShare), kRestartPileSteps);
+    EXPECT_EQ(restart_pile_steps(opt, kPileShare), 0u);
+    MltOptions given = opt;
+    given.restart = 0;
+    EXPECT_EQ(restart_pile_steps(given, 1.0), 0u);
+    MltOptions no_burn_in = opt;
+    no_burn_in.burn_in = false;
+    EXPECT_EQ(restart_pile_steps(no_burn_in, 1.0), 0u);
+    DeviceScene ds = prepare_scene(test::scene("tiny-caustic", 64, 64));
+    for (std::uint64_t seed : {3u, 4u}) {
+        MltOptions o;
+        o.threads = 1024;
+        o.burn_in_iters = 64;
+        o.seed = seed;
+        MltRenderer mlt(test::cl(), ds, o);
+        mlt.prepare();
+        mlt.step(32);
+        const MltReport r = mlt.report();
+        const double share = mlt.largest_start_share();
+        std::printf("tiny-caustic 64x64, seed %llu: the brightest path took %.3g%% of the "
+                    "chains (%.1f), b +-%.2f%%; restarts every %u steps\n",
+                    (unsigned long long)seed, 100 * share, share * o.threads, 100 * r.b_rel_error,
+                    r.restart_every);
+        if (seed == 4) {
+            EXPECT_GT(share, 4 * kPileShare);
+            EXPECT_EQ(r.restart_every, kRestartPileSteps);
+            EXPECT_EQ(r.restarts, 32u / kRestartPileSteps);
+        } else {
+            EXPECT_LT(share, kPileShare / 4);
+            EXPECT_EQ(r.restart_every, 0u);
+            EXPECT_EQ(r.restarts, 0u);
+        }
+    }
+}
+
 // MLT renders against PT, block by block, and b against PT's mean:
 // test_render_blocks.cpp.
 

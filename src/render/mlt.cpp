@@ -184,10 +184,16 @@ std::vector<double> MltRenderer::restart_rate(RankGroup& ranks) const {
 
 void MltRenderer::prepare(RankGroup& ranks) {
     Clock::time_point t0 = Clock::now();
-    if (opt_.restart == kRestartAuto) // every rank restarts alike, or none does
-        opt_.restart =
-            ranks.all(restart_steps(opt_, chains(), pixels()) > 0) ? kRestartAutoSteps : 0;
+    // Every rank restarts alike, or none does: where the chains cover the
+    // film, before the burn-in (whose cells' rule takes the large steps of
+    // restarts); else after it, by its piles.
+    if (opt_.restart == kRestartAuto && ranks.all(restart_steps(opt_, chains(), pixels()) > 0))
+        opt_.restart = kRestartAutoSteps;
     sample_starts(ranks);
+    if (opt_.restart == kRestartAuto)
+        opt_.restart = ranks.all(restart_pile_steps(opt_, burn_in_.largest_start_share()) == 0)
+                           ? 0
+                           : kRestartPileSteps;
     set_stratum_weights(ranks);
     if (split_ == Split::Auto) {
         bool pay = ranks.all(chains_pay(mlt_relative_variance(), behind_specular_share()));

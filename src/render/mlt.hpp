@@ -79,6 +79,9 @@ class MltRenderer : public Integrator {
     // burn-in's per-sample variance over all of them.
     double b() const;
     double b_rel_error() const;
+    // The share of the chains the burn-in started on its brightest path
+    // (MltBurnIn::largest_start_share), which --restart auto reads.
+    double largest_start_share() const { return burn_in_.largest_start_share(); }
 
     // Starts every chain at its starting sample's path.
     void init_chains() { init_chains(burn_in_film_); }

@@ -120,9 +120,10 @@ void MltBurnIn::run(RankGroup& ranks, const MemoryPlan& plan, const SceneBuffers
         if (opt_.burn_in) picks->add_round(it, host_);
     }
     rounds_ = iters;
-    if (opt_.burn_in)
+    if (opt_.burn_in) {
         write_picks(*picks, chains, strata);
-    else
+        largest_start_share_ = picks->largest_share();
+    } else
         fresh_picks(chains); // round iters, after those that estimated b
     s.samples = std::uint64_t(m) * (iters - counted);
     sums_ = s;

@@ -106,6 +106,9 @@ class MltBurnIn {
     double omc_variance() const { return omc_variance_; }
     double cell_variance() const { return cell_variance_; }
     double mlt_part_b() const { return mlt_part_b_; }
+    // The share of the chains that run() started on its brightest sample
+    // (StartPicks::largest_share; 0 without burn-in).
+    double largest_start_share() const { return largest_start_share_; }
     // What --split auto decides by (split.hpp, chains_pay): V_m, the MLT
     // part's mean luminance and the share of its light behind smooth
     // transmitters, from the parts before any cell went to the OMC part.
@@ -151,7 +154,7 @@ class MltBurnIn {
     ClKernel k_lum_;
     BurnInParts parts_;
     BurnInSums sums_;
-    double omc_variance_ = 0, cell_variance_ = 0, mlt_part_b_ = 0;
+    double omc_variance_ = 0, cell_variance_ = 0, mlt_part_b_ = 0, largest_start_share_ = 0;
     SplitEvidence evidence_;
     std::uint32_t rounds_ = 0;       // rounds run, those of restarts included
     std::optional<StartPicks> pool_; // the next restart's rounds so far

@@ -175,8 +175,11 @@ inline bool kelemen_in_force(const MltOptions& opt) {
 
 // --restart auto: every kRestartAutoSteps steps where the chains are at
 // least the film's pixels and the restarts' samples are large steps'
-// (Kelemen's weights, with burn-in); else never (doc/design.md, "Restarts").
-// Where chains are fewer than pixels the restarts lose by MSE. Every 8
+// (Kelemen's weights, with burn-in); where they are fewer, every
+// kRestartPileSteps steps if the burn-in started more than kPileShare of
+// the chains on one path (restart_pile_steps); else never (doc/design.md,
+// "Restarts"). Where chains are fewer than pixels the restarts lose by MSE
+// but for such piles. Every 8
 // steps, not 16: at 128x128 the 8x8-block error then falls below path
 // tracing's on cornell-water, cornell-glass and ajar, for 1-14% more MSE
 // (doc/RESULTS.md, "The restarts' rounds in the split's rule").
@@ -187,6 +190,29 @@ inline std::uint32_t restart_steps(const MltOptions& opt, std::uint64_t chains,
                                    std::uint64_t pixels) {
     if (opt.restart != kRestartAuto) return opt.restart;
     return kelemen_in_force(opt) && opt.burn_in && chains >= pixels ? kRestartAutoSteps : 0;
+}
+// Chains started on one burn-in path stay together until their steps part
+// them, and on a path far brighter than b that can take the whole render:
+// the image then holds that path's light at the burn-in's samples per
+// pixel, 2 at 512x512 on 2 cores. There (16,384 chains, seeds 1-4) the
+// brightest path took 0.03-0.08% of the chains on cornell-water,
+// cornell-glass, ajar and cornell-glossy, 0.12-0.38% on veach-mis, and
+// 14.6-15.1% on tiny-caustic at the three seeds whose burn-in found a path
+// from the ceiling through the ball to the spark (0.015% at the fourth):
+// some 2,400 chains on one pixel, 59 times path tracing's MSE over the
+// film. Restarting every 16 steps brought that to 2.4 times, where on the
+// four others it cost 1.2-1.6 times the MSE (doc/RESULTS.md, "Piles of
+// chains on one path").
+constexpr double kPileShare = 0.01;
+constexpr std::uint32_t kRestartPileSteps = 16;
+// --restart auto's steps between restarts, where restart_steps gave none,
+// after a burn-in that started a share `largest_share` of the chains on its
+// brightest path.
+inline std::uint32_t restart_pile_steps(const MltOptions& opt, double largest_share) {
+    return opt.restart == kRestartAuto && kelemen_in_force(opt) && opt.burn_in &&
+                   largest_share > kPileShare
+               ? kRestartPileSteps
+               : 0;
 }
 // The burn-in rounds, a path per thread each, that a step runs for the next
 // restart: B / R (MltRenderer::restart_work); 0 without restarts, or before

@@ -62,7 +62,10 @@ void StartPicks::add_round(std::uint32_t round, const std::vector<float>& lum) {
     rounds_.push_back(round);
     lum_.push_back(lum);
     for (float y : lum)
-        if (y > 0.0f && std::isfinite(y)) total_ += double(y);
+        if (y > 0.0f && std::isfinite(y)) {
+            total_ += double(y);
+            largest_ = std::max(largest_, double(y));
+        }
     int e2 = 0;
     std::frexp(total_, &e2); // total < 2^e2
     exponent_ = total_ > 0 ? 62 - e2 : 0;

@@ -49,6 +49,9 @@ class StartPicks {
     std::vector<cl_uint2> draw(const std::vector<std::uint32_t>& group_tile,
                                std::uint32_t group_chains, std::uint32_t chains,
                                std::uint64_t seed) const;
+    // The brightest sample's share of the luminance, and so of the chains
+    // drawn over the whole film (0 without light).
+    double largest_share() const { return total_ > 0 ? largest_ / total_ : 0.0; }
 
   private:
     struct Sample {
@@ -73,6 +76,7 @@ class StartPicks {
     std::vector<std::vector<float>> lum_; // per round added
     int exponent_ = 0;                    // of the fixed-point weights
     double total_ = 0;                    // the luminances' sum
+    double largest_ = 0;                  // the largest luminance
 };
 
 } // namespace smallmlt
