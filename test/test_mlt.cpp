@@ -407,45 +407,64 @@ TEST(MltRestart, AutoRestartsWhereTheChainsAreAtLeastThePixels) {
 
 // --restart auto where the chains are fewer than the pixels: restarts
 // every 16 steps after a burn-in whose brightest path took more than
-// kPileShare of the chains, else never. tiny-caustic at 64x64, 1,024
-// chains (a quarter of the pixels), 64 burn-in rounds: at seed 4 the
-// burn-in finds a path from the ceiling through the ball to the spark
-// (b +-21%) and starts a pile of chains on it; at seed 3 it finds none, and
-// its brightest path takes about one chain. A number given is kept.
-TEST(MltRestart, AutoRestartsWhereOnePathHoldsAPileOfChains) {
+// kPileShare of the chains, or whose cells found the chains' error where
+// they would stay above kPileStay times their error were they free; else
+// never. A number given is kept. Renders with a quarter as many chains as
+// pixels:
+// - tiny-caustic at 64x64, 64 burn-in rounds: at seed 4 the burn-in finds
+//   a path from the ceiling through the ball to the spark (b +-21%) and
+//   starts a pile of chains on it; at seed 3 it finds none, and its
+//   brightest path takes about one chain. The caustic lies behind glass,
+//   so no cell and no stay.
+// - veach-mis at 128x128, 32 rounds: the lamps' images on the plates,
+//   where chains would stay, though no path takes 1% of them.
+// - cornell-glass at 64x64, 64 rounds: neither.
+TEST(MltRestart, AutoRestartsWhereChainsPileUp) {
     MltOptions opt;
-    EXPECT_EQ(restart_pile_steps(opt, 2 * kPileShare), kRestartPileSteps);
-    EXPECT_EQ(restart_pile_steps(opt, kPileShare), 0u);
+    EXPECT_EQ(restart_pile_steps(opt, 2 * kPileShare, 0), kRestartPileSteps);
+    EXPECT_EQ(restart_pile_steps(opt, 0, 2 * kPileStay), kRestartPileSteps);
+    EXPECT_EQ(restart_pile_steps(opt, kPileShare, kPileStay), 0u);
     MltOptions given = opt;
     given.restart = 0;
-    EXPECT_EQ(restart_pile_steps(given, 1.0), 0u);
+    EXPECT_EQ(restart_pile_steps(given, 1.0, 1e9), 0u);
     MltOptions no_burn_in = opt;
     no_burn_in.burn_in = false;
-    EXPECT_EQ(restart_pile_steps(no_burn_in, 1.0), 0u);
-    DeviceScene ds = prepare_scene(test::scene("tiny-caustic", 64, 64));
-    for (std::uint64_t seed : {3u, 4u}) {
+    EXPECT_EQ(restart_pile_steps(no_burn_in, 1.0, 1e9), 0u);
+    struct Case {
+        const char* scene;
+        std::uint32_t side, rounds;
+        std::uint64_t seed;
+        bool pile, stay;
+    };
+    for (const Case& c :
+         {Case{"tiny-caustic", 64, 64, 3, false, false},
+          Case{"tiny-caustic", 64, 64, 4, true, false}, Case{"veach-mis", 128, 32, 2, false, true},
+          Case{"cornell-glass", 64, 64, 4, false, false}}) {
+        DeviceScene ds = prepare_scene(test::scene(c.scene, c.side, c.side));
         MltOptions o;
-        o.threads = 1024;
-        o.burn_in_iters = 64;
-        o.seed = seed;
+        o.threads = c.side * c.side / 4;
+        o.burn_in_iters = c.rounds;
+        o.seed = c.seed;
         MltRenderer mlt(test::cl(), ds, o);
         mlt.prepare();
         mlt.step(32);
         const MltReport r = mlt.report();
-        const double share = mlt.largest_start_share();
-        std::printf("tiny-caustic 64x64, seed %llu: the brightest path took %.3g%% of the "
-                    "chains (%.1f), b +-%.2f%%; restarts every %u steps\n",
-                    (unsigned long long)seed, 100 * share, share * o.threads, 100 * r.b_rel_error,
-                    r.restart_every);
-        if (seed == 4) {
-            EXPECT_GT(share, 4 * kPileShare);
-            EXPECT_EQ(r.restart_every, kRestartPileSteps);
-            EXPECT_EQ(r.restarts, 32u / kRestartPileSteps);
-        } else {
-            EXPECT_LT(share, kPileShare / 4);
-            EXPECT_EQ(r.restart_every, 0u);
-            EXPECT_EQ(r.restarts, 0u);
-        }
+        const double share = mlt.largest_start_share(), stay = mlt.chains_stay();
+        std::printf("%s %ux%u, seed %llu: the brightest path took %.3g%% of the chains (%.1f), "
+                    "stay %.3g, b +-%.2f%%; restarts every %u steps\n",
+                    c.scene, c.side, c.side, (unsigned long long)c.seed, 100 * share,
+                    share * o.threads, stay, 100 * r.b_rel_error, r.restart_every);
+        if (c.pile)
+            EXPECT_GT(share, 4 * kPileShare) << c.scene << " " << c.seed;
+        else
+            EXPECT_LT(share, kPileShare) << c.scene << " " << c.seed;
+        if (c.stay)
+            EXPECT_GT(stay, 2 * kPileStay) << c.scene << " " << c.seed;
+        else
+            EXPECT_LT(stay, kPileStay / 4) << c.scene << " " << c.seed;
+        const bool restarts = c.pile || c.stay;
+        EXPECT_EQ(r.restart_every, restarts ? kRestartPileSteps : 0u) << c.scene << " " << c.seed;
+        EXPECT_EQ(r.restarts, restarts ? 32u / kRestartPileSteps : 0u) << c.scene << " " << c.seed;
     }
 }
 

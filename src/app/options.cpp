@@ -260,7 +260,8 @@ const std::vector<Flag> kMltFlags = {
      "chains, whose error is less correlated across the film; 0: never ({range}); auto: "
      "every 8 steps where the chains are at least the film's pixels and Kelemen's weights "
      "are in force; where they are fewer, every 16 steps after a burn-in that started more "
-     "than 1% of the chains on one path; else never (default {default}; "
+     "than 1% of the chains on one path or found small bright areas they would stay on; else "
+     "never (default {default}; "
      "doc/design.md, \"Restarts\")",
      0, 1 << 30, nullptr,
      [] {

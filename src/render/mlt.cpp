@@ -191,7 +191,8 @@ void MltRenderer::prepare(RankGroup& ranks) {
         opt_.restart = kRestartAutoSteps;
     sample_starts(ranks);
     if (opt_.restart == kRestartAuto)
-        opt_.restart = ranks.all(restart_pile_steps(opt_, burn_in_.largest_start_share()) == 0)
+        opt_.restart = ranks.all(restart_pile_steps(opt_, burn_in_.largest_start_share(),
+                                                    target_.chains_stay()) == 0)
                            ? 0
                            : kRestartPileSteps;
     set_stratum_weights(ranks);

@@ -204,13 +204,24 @@ inline std::uint32_t restart_steps(const MltOptions& opt, std::uint64_t chains,
 // four others it cost 1.2-1.6 times the MSE (doc/RESULTS.md, "Piles of
 // chains on one path").
 constexpr double kPileShare = 0.01;
+// Chains pile up too on small areas far brighter than b, where they stay
+// until a large step takes them away (chain_correlation): the OMC part's
+// cells take such areas where path tracing renders them well, and the rest
+// of that error, before any cell goes, is `stay` of omc_cells, over the
+// error the chains would have were they free. At 512x512 (seeds 1-4) it
+// was 0.0012-0.20 on the bench's other scenes and 2.7-3.7 on veach-mis,
+// whose lamps' images on the plates held the chains: 8x8-block error 7.0
+// times PT's, 1.7 with these restarts (doc/RESULTS.md, "Piles of chains on
+// one path").
+constexpr double kPileStay = 1.0;
 constexpr std::uint32_t kRestartPileSteps = 16;
 // --restart auto's steps between restarts, where restart_steps gave none,
 // after a burn-in that started a share `largest_share` of the chains on its
-// brightest path.
-inline std::uint32_t restart_pile_steps(const MltOptions& opt, double largest_share) {
+// brightest path and found their error where they would stay `stay` times
+// their error were they free.
+inline std::uint32_t restart_pile_steps(const MltOptions& opt, double largest_share, double stay) {
     return opt.restart == kRestartAuto && kelemen_in_force(opt) && opt.burn_in &&
-                   largest_share > kPileShare
+                   (largest_share > kPileShare || stay > kPileStay)
                ? kRestartPileSteps
                : 0;
 }

@@ -130,7 +130,7 @@ std::vector<std::uint32_t> choose(std::vector<Candidate> open, const ChainsError
 } // namespace
 
 std::vector<bool> omc_cells(const TargetCells& cells, std::uint32_t width, std::uint32_t height,
-                            const BurnInParts& parts, const ChainSteps& steps) {
+                            const BurnInParts& parts, const ChainSteps& steps, double* stay) {
     const std::uint32_t n = target_cell_count(cells, height);
     std::vector<PixelVariance> variance(n);
     std::vector<double> lum(n, 0.0), stuck(n, 0.0), behind(n, 0.0), samples(n, 0.0), pixels(n, 0.0);
@@ -170,6 +170,7 @@ std::vector<bool> omc_cells(const TargetCells& cells, std::uint32_t width, std::
         open.push_back(cand);
     }
     film.light_0 = film.light;
+    if (stay) *stay = film.light > 0 ? film.stuck / film.light : 0.0; // K L_0 / L^2, L = L_0
     std::vector<bool> whole(n, false);
     for (std::uint32_t c : choose(std::move(open), film))
         whole[c] = true;

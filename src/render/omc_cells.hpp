@@ -80,8 +80,11 @@ std::vector<double> light_areas(const std::vector<double>& means, std::uint32_t 
 
 // Per cell of `cells` on a width x height film: true where the OMC part
 // renders it whole, from the burn-in's parts, for chains whose steps are
-// `steps`.
+// `steps`. And, where `stay` is given, the chains' error where they would
+// stay on small bright areas over their error were they free everywhere,
+// before any cell goes (K / L^2 of omc_cells.cpp's ChainsError).
 std::vector<bool> omc_cells(const TargetCells& cells, std::uint32_t width, std::uint32_t height,
-                            const BurnInParts& parts, const ChainSteps& steps);
+                            const BurnInParts& parts, const ChainSteps& steps,
+                            double* stay = nullptr);
 
 } // namespace smallmlt

@@ -49,7 +49,8 @@ void TargetBuffer::fix(RankGroup& ranks, std::uint32_t width, std::uint32_t heig
     const std::uint32_t n = target_cell_count(cells, height);
     set(cells, width, height,
         two_stage ? target_weights(cells, width, height, all.rest) : std::vector<float>(n, 1.0f),
-        omc ? smallmlt::omc_cells(cells, width, height, all, steps) : std::vector<bool>());
+        omc ? smallmlt::omc_cells(cells, width, height, all, steps, &chains_stay_)
+            : std::vector<bool>());
 }
 
 void TargetBuffer::set(const TargetCells& cells, std::uint32_t width, std::uint32_t height,

@@ -33,6 +33,9 @@ class TargetBuffer {
     // The cells of weight 0 and the pixels they cover.
     std::uint32_t omc_cells() const { return omc_cells_; }
     std::uint64_t omc_pixels() const { return omc_pixels_; }
+    // What fix() found of the chains' error where they would stay, over
+    // their error were they free (omc_cells' `stay`; 0 without cells).
+    double chains_stay() const { return chains_stay_; }
     // Whether pixel (x, y) lies in a cell of weight 0.
     bool omc_pixel(std::uint32_t x, std::uint32_t y) const;
     // The share of tile t's pixels that lie in cells of weight above 0.
@@ -49,6 +52,7 @@ class TargetBuffer {
     std::vector<bool> whole_; // per cell: weight 0 (empty: none)
     std::uint32_t omc_cells_ = 0;
     std::uint64_t omc_pixels_ = 0;
+    double chains_stay_ = 0;
 };
 
 inline void kernel_arg(ClKernel& k, cl_uint& i, const TargetBuffer& t) {
