@@ -176,10 +176,10 @@ inline bool kelemen_in_force(const MltOptions& opt) {
 // --restart auto: every kRestartAutoSteps steps where the chains are at
 // least the film's pixels and the restarts' samples are large steps'
 // (Kelemen's weights, with burn-in); where they are fewer, every
-// kRestartPileSteps steps if the burn-in started more than kPileShare of
-// the chains on one path (restart_pile_steps); else never (doc/design.md,
-// "Restarts"). Where chains are fewer than pixels the restarts lose by MSE
-// but for such piles. Every 8
+// kRestartPileSteps steps where the burn-in shows the chains piling up
+// (restart_pile_steps); else never (doc/design.md, "Restarts"). Where
+// chains are fewer than pixels the restarts lose by MSE but for such
+// piles. Every 8
 // steps, not 16: at 128x128 the 8x8-block error then falls below path
 // tracing's on cornell-water, cornell-glass and ajar, for 1-14% more MSE
 // (doc/RESULTS.md, "The restarts' rounds in the split's rule").
@@ -200,7 +200,7 @@ inline std::uint32_t restart_steps(const MltOptions& opt, std::uint64_t chains,
 // 14.6-15.1% on tiny-caustic at the three seeds whose burn-in found a path
 // from the ceiling through the ball to the spark (0.015% at the fourth):
 // some 2,400 chains on one pixel, 59 times path tracing's MSE over the
-// film. Restarting every 16 steps brought that to 2.4 times, where on the
+// film. Restarting every 16 steps brought that to 2.0-2.4 times, where on the
 // four others it cost 1.2-1.6 times the MSE (doc/RESULTS.md, "Piles of
 // chains on one path").
 constexpr double kPileShare = 0.01;
