@@ -170,7 +170,7 @@ std::vector<bool> omc_cells(const TargetCells& cells, std::uint32_t width, std::
         open.push_back(cand);
     }
     film.light_0 = film.light;
-    if (stay) *stay = film.light > 0 ? film.stuck / film.light : 0.0; // K L_0 / L^2, L = L_0
+    if (stay) *stay = film.light > 0 ? film.stuck / film.light : 0.0; // K / L^2: stuck is K / L_0
     std::vector<bool> whole(n, false);
     for (std::uint32_t c : choose(std::move(open), film))
         whole[c] = true;
