@@ -186,13 +186,14 @@ void MltRenderer::prepare(RankGroup& ranks) {
     Clock::time_point t0 = Clock::now();
     // Every rank restarts alike, or none does: where the chains cover the
     // film, before the burn-in (whose cells' rule takes the large steps of
-    // restarts); else after it, by its piles.
+    // restarts); else after it, by its piles (whose cells were chosen for
+    // restarts where the stay restarts, MltBurnIn::fix_target).
     if (opt_.restart == kRestartAuto && ranks.all(restart_steps(opt_, chains(), pixels()) > 0))
         opt_.restart = kRestartAutoSteps;
     sample_starts(ranks);
     if (opt_.restart == kRestartAuto)
         opt_.restart = ranks.all(restart_pile_steps(opt_, burn_in_.largest_start_share(),
-                                                    target_.chains_stay()) == 0)
+                                                    burn_in_.chains_stay()) == 0)
                            ? 0
                            : kRestartPileSteps;
     set_stratum_weights(ranks);

@@ -109,6 +109,11 @@ class MltBurnIn {
     // The share of the chains that run() started on its brightest sample
     // (StartPicks::largest_share; 0 without burn-in).
     double largest_start_share() const { return largest_start_share_; }
+    // The chains' error where they would stay on small bright areas, over
+    // their error were they free, as the OMC part's cells found it for the
+    // steps of --restart auto before it resolves (omc_cells' `stay`; 0
+    // without cells).
+    double chains_stay() const { return chains_stay_; }
     // What --split auto decides by (split.hpp, chains_pay): V_m, the MLT
     // part's mean luminance and the share of its light behind smooth
     // transmitters, from the parts before any cell went to the OMC part.
@@ -137,7 +142,9 @@ class MltBurnIn {
     enum class Parts { None, All, Cells };
     void sample_round(const Round& r, std::uint32_t it, Parts parts, BurnInSums& s);
     // Fixes the target from the parts so far (TargetBuffer::fix); where
-    // cells go to the OMC part, those parts are dropped. True where the
+    // cells go to the OMC part, those parts are dropped. The cells are for
+    // the chains' steps, those of restarting chains where the chains' stay
+    // will make --restart auto restart (restart_pile_steps). True where the
     // target changed (the two-stage weights, cells of weight 0): samples
     // drawn before then are then not the target's.
     bool fix_target(RankGroup& ranks, const SceneBuffers& scene, TargetBuffer& target,
@@ -155,6 +162,7 @@ class MltBurnIn {
     BurnInParts parts_;
     BurnInSums sums_;
     double omc_variance_ = 0, cell_variance_ = 0, mlt_part_b_ = 0, largest_start_share_ = 0;
+    double chains_stay_ = 0;
     SplitEvidence evidence_;
     std::uint32_t rounds_ = 0;       // rounds run, those of restarts included
     std::optional<StartPicks> pool_; // the next restart's rounds so far

@@ -211,8 +211,8 @@ constexpr double kPileShare = 0.01;
 // error the chains would have were they free. At 512x512 (seeds 1-4) it
 // was 0.0012-0.20 on the bench's other scenes and 2.7-3.7 on veach-mis,
 // whose lamps' images on the plates held the chains: 8x8-block error 7.0
-// times PT's, 1.7 with these restarts (doc/RESULTS.md, "Piles of chains on
-// one path").
+// times PT's, 1.15 with these restarts and the cells chosen for them
+// (MltBurnIn::fix_target; doc/RESULTS.md, "Piles of chains on one path").
 constexpr double kPileStay = 1.0;
 constexpr std::uint32_t kRestartPileSteps = 16;
 // --restart auto's steps between restarts, where restart_steps gave none,

@@ -41,16 +41,15 @@ BurnInParts ranks_parts(RankGroup& ranks, const BurnInParts& parts) {
 } // namespace
 
 void TargetBuffer::fix(RankGroup& ranks, std::uint32_t width, std::uint32_t height,
-                       const BurnInParts& parts, bool two_stage, bool omc,
-                       const ChainSteps& steps) {
+                       const BurnInParts& parts, bool two_stage, bool omc, const ChainSteps& steps,
+                       double* stay) {
     const BurnInParts all = ranks_parts(ranks, parts);
     const TargetCells cells = target_cells(
         width, height, std::accumulate(all.count.begin(), all.count.end(), std::uint64_t(0)));
     const std::uint32_t n = target_cell_count(cells, height);
     set(cells, width, height,
         two_stage ? target_weights(cells, width, height, all.rest) : std::vector<float>(n, 1.0f),
-        omc ? smallmlt::omc_cells(cells, width, height, all, steps, &chains_stay_)
-            : std::vector<bool>());
+        omc ? smallmlt::omc_cells(cells, width, height, all, steps, stay) : std::vector<bool>());
 }
 
 void TargetBuffer::set(const TargetCells& cells, std::uint32_t width, std::uint32_t height,

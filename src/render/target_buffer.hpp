@@ -22,9 +22,10 @@ class TargetBuffer {
     // Cells and weights from the burn-in's parts, summed over every rank so
     // that all ranks fix one target: the two-stage target's weights where
     // `two_stage` (else 1), and 0 in the cells the OMC part renders whole
-    // where `omc`, for chains whose steps are `steps` (omc_cells).
+    // where `omc`, for chains whose steps are `steps` (omc_cells, which
+    // writes `stay` where given: 0 without cells).
     void fix(RankGroup& ranks, std::uint32_t width, std::uint32_t height, const BurnInParts& parts,
-             bool two_stage, bool omc, const ChainSteps& steps);
+             bool two_stage, bool omc, const ChainSteps& steps, double* stay = nullptr);
     // Cells `cells` of a width x height film with weights `w` (one per cell),
     // 0 where `whole` (per cell; empty: none) says the OMC part renders the
     // cell whole.
@@ -33,9 +34,6 @@ class TargetBuffer {
     // The cells of weight 0 and the pixels they cover.
     std::uint32_t omc_cells() const { return omc_cells_; }
     std::uint64_t omc_pixels() const { return omc_pixels_; }
-    // What fix() found of the chains' error where they would stay, over
-    // their error were they free (omc_cells' `stay`; 0 without cells).
-    double chains_stay() const { return chains_stay_; }
     // Whether pixel (x, y) lies in a cell of weight 0.
     bool omc_pixel(std::uint32_t x, std::uint32_t y) const;
     // The share of tile t's pixels that lie in cells of weight above 0.
@@ -52,7 +50,6 @@ class TargetBuffer {
     std::vector<bool> whole_; // per cell: weight 0 (empty: none)
     std::uint32_t omc_cells_ = 0;
     std::uint64_t omc_pixels_ = 0;
-    double chains_stay_ = 0;
 };
 
 inline void kernel_arg(ClKernel& k, cl_uint& i, const TargetBuffer& t) {
