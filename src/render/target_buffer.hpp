@@ -23,7 +23,7 @@ class TargetBuffer {
     // that all ranks fix one target: the two-stage target's weights where
     // `two_stage` (else 1), and 0 in the cells the OMC part renders whole
     // where `omc`, for chains whose steps are `steps` (omc_cells, which
-    // writes `stay` where given: 0 without cells).
+    // then writes `stay` where given; without `omc` it is left as it was).
     void fix(RankGroup& ranks, std::uint32_t width, std::uint32_t height, const BurnInParts& parts,
              bool two_stage, bool omc, const ChainSteps& steps, double* stay = nullptr);
     // Cells `cells` of a width x height film with weights `w` (one per cell),
