@@ -118,11 +118,13 @@ inline double furnace_sum(int lo, int hi) {
     return s;
 }
 
+// The paper's MLT: no split, expected values, no strata.
 inline MltOptions plain_mlt() {
     MltOptions opt;
     opt.split = Split::None;
     opt.kelemen = false;
     opt.large_step = 0.5f;
+    opt.strata = 0;
     return opt;
 }
 

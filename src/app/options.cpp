@@ -214,19 +214,25 @@ const std::vector<Flag> kMltFlags = {
      "image of it from the first half of burn-in, so that dim regions get as many mutations "
      "per pixel as bright ones (default {default}; doc/design.md, \"The target\")",
      0, 0, nullptr, [] { return std::string(target_name(MltOptions().target)); }},
-    {"--strata", "none|auto|PIXELS", Section::Mlt,
+    {"--strata", "none|piles|auto|PIXELS", Section::Mlt,
      [](JobOptions& o, const FlagValue& v) {
-         o.mlt.strata = v.text == "none"   ? 0
-                        : v.text == "auto" ? kStrataAuto
-                                           : std::uint32_t(v.integer());
+         o.mlt.strata = v.text == "none"    ? 0
+                        : v.text == "auto"  ? kStrataAuto
+                        : v.text == "piles" ? kStrataPiles
+                                            : std::uint32_t(v.integer());
      },
      "stratified MLT: the film cut into square tiles of PIXELS on a side ({range}), each "
      "with its own chains and normalization; auto: tiles of at least 8 pixels, at most one "
-     "for every 4 work-groups of chains (default {default}; doc/design.md, \"Strata\")",
+     "for every 4 work-groups of chains; piles: auto's tiles where the burn-in started more "
+     "than 1% of the chains on one path, else none (default {default}; doc/design.md, "
+     "\"Strata\")",
      1, 16384, nullptr,
      [] {
          std::uint32_t s = MltOptions().strata;
-         return s == 0 ? std::string("none") : s == kStrataAuto ? "auto" : std::to_string(s);
+         return s == 0              ? std::string("none")
+                : s == kStrataAuto  ? "auto"
+                : s == kStrataPiles ? "piles"
+                                    : std::to_string(s);
      }},
     {"--film-step", "auto|film|PIXELS", Section::Mlt,
      [](JobOptions& o, const FlagValue& v) {

@@ -116,8 +116,22 @@ void MltRenderer::sample_starts(RankGroup& ranks) {
     if (!hooks_.zero_cells.empty())
         target_.set(hooks_.cells, ds_.frame.width, ds_.frame.height,
                     std::vector<float>(hooks_.zero_cells.size(), 1.0f), hooks_.zero_cells);
-    burn_in_.run(ranks, plan_, scene_, target_, burn_in_film_,
-                 MltBurnIn::Chains{state_, stats_, picks_, chains()}, grid_, strata_, film_);
+    const MltBurnIn::Chains chains{state_, stats_, picks_, this->chains()};
+    burn_in_.run(ranks, plan_, scene_, target_, burn_in_film_, chains, grid_, strata_, film_);
+    // Every rank keeps the tiles of --strata piles, or none does.
+    if (opt_.strata == kStrataPiles && grid_.count() > 1 &&
+        ranks.all(!strata_for_piles(opt_, burn_in_.largest_start_share())))
+        set_grid(smallmlt::strata_grid(ds_.frame.width, ds_.frame.height, 0));
+    burn_in_.start_chains(chains, strata_);
+}
+
+void MltRenderer::set_grid(StrataGrid grid) {
+    burn_in_.regrid(grid_, grid, ds_.frame.width);
+    grid_ = std::move(grid);
+    strata_.set_grid(grid_);
+    for (std::vector<double>* v : {&kelemen_b0_, &kelemen_large_, &kelemen_rate_})
+        v->assign(grid_.count(), 0.0);
+    kelemen_pb_.assign(grid_.count(), 0.0f);
 }
 
 BEstimate MltRenderer::b_estimate(const MltStats& s) const {
@@ -360,6 +374,7 @@ MltReport MltRenderer::report() const {
     r.behind_specular_share = omc_ ? behind_specular_share() : 0;
     r.kelemen = opt_.kelemen;
     r.strata = grid_.count();
+    r.strata_piles = opt_.strata == kStrataPiles;
     r.restart_every = opt_.restart;
     r.restart_samples = opt_.restart && opt_.burn_in && kelemen_in_force(opt_);
     r.restarts = restarts_;

@@ -65,8 +65,8 @@ class MltRenderer : public Integrator {
     MltReport report() const;
 
     // Runs the OMC samples of burn-in (src/render/mlt_burn_in.hpp): the
-    // first estimate of b, and the chains' starting samples (burn-in or
-    // fresh).
+    // first estimate of b, the tiles of --strata piles (kept or dropped),
+    // and the chains' starting samples (burn-in or fresh).
     void sample_starts(RankGroup& ranks);
     void sample_starts() {
         SingleRank one;
@@ -146,6 +146,9 @@ class MltRenderer : public Integrator {
   private:
     // The pick's paths lie on `film`.
     void init_chains(const BurnInFilm& film);
+    // The tiles of `grid` in place of grid_'s, after the burn-in's rounds
+    // and before the chains start (each tile of grid_ within one of grid's).
+    void set_grid(StrataGrid grid);
     // What each tile's large steps weigh, once the target is fixed: their
     // density q on its chains' part and, with Kelemen's weights, p q b0.
     void set_stratum_weights(RankGroup& ranks);

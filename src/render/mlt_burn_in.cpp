@@ -98,11 +98,9 @@ void MltBurnIn::run(RankGroup& ranks, const MemoryPlan& plan, const SceneBuffers
     allocate_rounds(plan);
     const Round r{scene, target, film, chains, grid, strata, image, false, lum_, omc_};
     const std::uint32_t tiles = grid.count();
-    std::optional<StartPicks> picks;
-    picks.emplace(film, scene.frame.width, scene.frame.height, grid);
+    picks_.emplace(film, scene.frame.width, scene.frame.height, grid);
     host_.resize(m);
     host_omc_.resize(parts ? 8 * m : 0);
-    const std::uint32_t groups = std::uint32_t(strata.group_tiles().size());
     BurnInSums s;
     s.tile_lum.assign(tiles, 0);
     std::uint32_t counted = 0; // the first round of b's sums and of the picks
@@ -111,20 +109,18 @@ void MltBurnIn::run(RankGroup& ranks, const MemoryPlan& plan, const SceneBuffers
             // The target changed: b and the starts take the rounds after it.
             s = BurnInSums();
             s.tile_lum.assign(tiles, 0);
-            picks.emplace(film, scene.frame.width, scene.frame.height, grid);
+            picks_.emplace(film, scene.frame.width, scene.frame.height, grid);
             counted = it;
         }
         sample_round(r, it, parts ? Parts::All : Parts::None, s);
-        if (it == counted && tiles > 1)
-            strata.deal(strata_group_tiles(strata_groups(round_lum_, groups), groups));
-        if (opt_.burn_in) picks->add_round(it, host_);
+        if (it == counted) deal_lum_ = round_lum_;
+        if (opt_.burn_in) picks_->add_round(it, host_);
     }
     rounds_ = iters;
-    if (opt_.burn_in) {
-        write_picks(*picks, chains, strata);
-        largest_start_share_ = picks->largest_share();
-    } else
-        fresh_picks(chains); // round iters, after those that estimated b
+    if (opt_.burn_in)
+        largest_start_share_ = picks_->largest_share();
+    else
+        picks_.reset();
     s.samples = std::uint64_t(m) * (iters - counted);
     sums_ = s;
     sums_.update_variance();
@@ -140,6 +136,31 @@ void MltBurnIn::run(RankGroup& ranks, const MemoryPlan& plan, const SceneBuffers
         cell_variance_ = cells.value();
         if (target.omc_cells() == 0) evidence_ = split_evidence(parts_);
     }
+}
+
+void MltBurnIn::regrid(const StrataGrid& from, const StrataGrid& to, std::uint32_t width) {
+    std::vector<std::uint64_t> tile_lum(to.count(), 0);
+    std::vector<double> deal_lum(to.count(), 0.0);
+    for (std::uint32_t t = 0; t < from.count(); ++t) {
+        const FilmTile& f = from.tiles[t];
+        const std::uint32_t into = to.pixel_tile[std::uint64_t(f.y0) * width + f.x0];
+        tile_lum[into] += sums_.tile_lum[t];
+        deal_lum[into] += deal_lum_[t];
+    }
+    sums_.tile_lum = tile_lum;
+    deal_lum_ = deal_lum;
+    if (picks_) picks_->set_grid(to);
+}
+
+void MltBurnIn::start_chains(const Chains& chains, StrataBuffer& strata) {
+    const std::uint32_t groups = std::uint32_t(strata.group_tiles().size());
+    if (deal_lum_.size() > 1)
+        strata.deal(strata_group_tiles(strata_groups(deal_lum_, groups), groups));
+    if (picks_)
+        write_picks(*picks_, chains, strata);
+    else
+        fresh_picks(chains); // round iters, after those that estimated b
+    picks_.reset();
 }
 
 MltBurnIn::SplitEvidence MltBurnIn::split_evidence(const BurnInParts& parts) {

@@ -69,13 +69,20 @@ class MltBurnIn {
     // MltRenderer::prepare before run()).
     MltBurnIn(const ClContext& cl, cl_program program, const MltOptions& opt, std::uint64_t pixels);
     // Runs every round on the rank (ranks meet only where the target is
-    // fixed). The first round that estimates b deals the chains'
-    // work-groups to the grid's tiles (strata_groups, by each tile's
-    // luminance sum), and each chain picks its start among its tile's
-    // samples. Without burn-in, the picks are fresh samples.
+    // fixed), its sums by the tiles of `grid`; start_chains then starts the
+    // chains.
     void run(RankGroup& ranks, const MemoryPlan& plan, const SceneBuffers& scene,
              TargetBuffer& target, const BurnInFilm& film, const Chains& chains,
              const StrataGrid& grid, StrataBuffer& strata, MltFilm& image);
+    // After run(): the tiles of `to` in place of run()'s `from` (each tile of
+    // `from` within one of `to`; films `width` pixels wide): b's sums, the
+    // deal's luminances and the draw's layout by the tiles of `to`.
+    void regrid(const StrataGrid& from, const StrataGrid& to, std::uint32_t width);
+    // After run(): deals the chains' work-groups to the tiles
+    // (strata_groups, by each tile's luminance in the first round that
+    // estimates b), and each chain picks its start among its tile's samples.
+    // Without burn-in, the picks are fresh samples.
+    void start_chains(const Chains& chains, StrataBuffer& strata);
 
     // The rounds of the next restart (--restart), a few at a time: `rounds`
     // more rounds of the burn-in, numbered after every round so far and
@@ -164,8 +171,10 @@ class MltBurnIn {
     double omc_variance_ = 0, cell_variance_ = 0, mlt_part_b_ = 0, largest_start_share_ = 0;
     double chains_stay_ = 0;
     SplitEvidence evidence_;
-    std::uint32_t rounds_ = 0;       // rounds run, those of restarts included
-    std::optional<StartPicks> pool_; // the next restart's rounds so far
+    std::uint32_t rounds_ = 0;        // rounds run, those of restarts included
+    std::optional<StartPicks> picks_; // run()'s rounds, until start_chains
+    std::vector<double> deal_lum_;    // per tile, the first round of b's luminance
+    std::optional<StartPicks> pool_;  // the next restart's rounds so far
     std::vector<float> host_, host_omc_;
     std::vector<double> round_lum_;
     std::vector<bool> cell_pixels_; // per pixel: in an OMC part's cell (set at the first restart)

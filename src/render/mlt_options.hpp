@@ -5,6 +5,7 @@
 #include "render/mlt_film.hpp"
 #include "render/omc_cells.hpp"
 #include "render/split.hpp"
+#include "render/strata.hpp"
 #include "render/target.hpp"
 
 #include "film_step.h"
@@ -112,8 +113,9 @@ struct MltOptions {
     // alone, and the image's mean is b.
     bool kelemen = kDefaultKelemen;
     // Stratified MLT (src/render/strata.hpp): the tiles' side in pixels, 0
-    // for none (one tile, the whole film), kStrataAuto for the rule's.
-    std::uint32_t strata = 0;
+    // for none (one tile, the whole film), kStrataAuto for the rule's,
+    // kStrataPiles for the rule's where the chains pile up (strata_for_piles).
+    std::uint32_t strata = kStrataPiles;
     // The largest small step of the film numbers, in pixels (0: a 64th of
     // the film, Kelemen's 2^-6 of the unit square; cl/sampling/sample_chain.cl).
     std::uint32_t film_step = kDefaultFilmStep;
@@ -204,6 +206,11 @@ inline std::uint32_t restart_steps(const MltOptions& opt, std::uint64_t chains,
 // four others it cost 1.2-1.6 times the MSE (doc/RESULTS.md, "Piles of
 // chains on one path").
 constexpr double kPileShare = 0.01;
+// Whether a burn-in that started a share `largest_share` of the chains on
+// its brightest path piled them on it.
+inline bool piled_on_one_path(double largest_share) {
+    return largest_share > kPileShare;
+}
 // Chains pile up too on small areas far brighter than b, where they stay
 // until a large step takes them away (chain_correlation): the OMC part's
 // cells take such areas where path tracing renders them well, and the rest
@@ -221,9 +228,21 @@ constexpr std::uint32_t kRestartPileSteps = 16;
 // their error were they free.
 inline std::uint32_t restart_pile_steps(const MltOptions& opt, double largest_share, double stay) {
     return opt.restart == kRestartAuto && kelemen_in_force(opt) && opt.burn_in &&
-                   (largest_share > kPileShare || stay > kPileStay)
+                   (piled_on_one_path(largest_share) || stay > kPileStay)
                ? kRestartPileSteps
                : 0;
+}
+// --strata piles: the tiles of auto where the burn-in that started a share
+// `largest_share` of the chains on its brightest path piled them on it,
+// else none. A restart's pile then forms among one tile's chains and holds
+// that tile's light, not the film's: tiny-caustic at 512x512 (eight seeds
+// of 20 s, four of them piled) read 1.05 / 1.37 / 1.33 times path
+// tracing's MSE / 8x8 / 32x32 error without strata, 0.15 / 0.19 / 0.27
+// with these. On the bench's other scenes, where no burn-in piles, strata
+// cost up to 1.25 times the MSE and 1.34 times the 8x8 blocks
+// (doc/RESULTS.md, "Piles of chains on one path").
+inline bool strata_for_piles(const MltOptions& opt, double largest_share) {
+    return opt.strata == kStrataPiles && piled_on_one_path(largest_share);
 }
 // The burn-in rounds, a path per thread each, that a step runs for the next
 // restart: B / R (MltRenderer::restart_work); 0 without restarts, or before

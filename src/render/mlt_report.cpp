@@ -112,7 +112,8 @@ std::string mlt_summary(const MltReport& r) {
         out += buf;
     }
     if (r.strata > 1) {
-        std::snprintf(buf, sizeof buf, "; stratified, %u tiles", r.strata);
+        std::snprintf(buf, sizeof buf, "; stratified, %u tiles%s", r.strata,
+                      r.strata_piles ? " (the burn-in piled chains on one path)" : "");
         out += buf;
     }
     if (r.omc_cells > 0) {

@@ -35,6 +35,7 @@ struct MltReport {
     std::uint32_t restart_every = 0, restarts = 0; // --restart's steps; restarts so far
     bool restart_samples = false;                  // the restarts' burn-in samples are large steps'
     std::uint32_t strata = 1;                      // tiles of stratified MLT
+    bool strata_piles = false;                     // those of --strata piles, kept
     bool two_stage = false;
     std::uint32_t target_cells = 1;
     std::uint32_t omc_cells = 0; // cells the OMC part renders whole

@@ -45,15 +45,20 @@ std::vector<std::uint32_t> start_pick_order(std::uint32_t width, std::uint32_t h
 
 StartPicks::StartPicks(const BurnInFilm& film, std::uint32_t width, std::uint32_t height,
                        const StrataGrid& grid)
-    : film_(film), pixels_(width * height), order_(start_pick_order(width, height, grid)),
-      tile_begin_(grid.count() + 1, 0), residue_(pixels_) {
-    for (std::uint32_t p : order_)
-        ++tile_begin_[grid.pixel_tile[p] + 1];
-    std::partial_sum(tile_begin_.begin(), tile_begin_.end(), tile_begin_.begin());
+    : film_(film), width_(width), height_(height), pixels_(width * height), residue_(pixels_) {
+    set_grid(grid);
     // Sample g lies at pixel ((g + offset) mod P) step mod P
     // (burn_in_film_sample): pixel p takes the residue h with h step = p.
     for (std::uint32_t h = 0; h < pixels_; ++h)
         residue_[burn_in_film_sample(film_, pixels_, h + pixels_ - film_.offset).first] = h;
+}
+
+void StartPicks::set_grid(const StrataGrid& grid) {
+    order_ = start_pick_order(width_, height_, grid);
+    tile_begin_.assign(grid.count() + 1, 0);
+    for (std::uint32_t p : order_)
+        ++tile_begin_[grid.pixel_tile[p] + 1];
+    std::partial_sum(tile_begin_.begin(), tile_begin_.end(), tile_begin_.begin());
 }
 
 void StartPicks::add_round(std::uint32_t round, const std::vector<float>& lum) {

@@ -37,6 +37,8 @@ class StartPicks {
     // `grid`.
     StartPicks(const BurnInFilm& film, std::uint32_t width, std::uint32_t height,
                const StrataGrid& grid);
+    // Lays the samples out by the tiles of `grid` instead (the same film).
+    void set_grid(const StrataGrid& grid);
     // Adds round `round`'s luminances, one per sample index (at most
     // film.per_round of them), rounds in increasing order.
     void add_round(std::uint32_t round, const std::vector<float>& lum);
@@ -68,7 +70,7 @@ class StartPicks {
                    const std::vector<std::uint32_t>& chains, std::vector<cl_uint2>& out) const;
 
     BurnInFilm film_;
-    std::uint32_t pixels_;
+    std::uint32_t width_, height_, pixels_;
     std::vector<std::uint32_t> order_;      // pixels in the draw's order
     std::vector<std::uint32_t> tile_begin_; // per tile and one more: its first place in order_
     std::vector<std::uint32_t> residue_;    // per pixel: (g + offset) mod P of its samples g

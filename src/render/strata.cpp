@@ -57,7 +57,7 @@ StrataGrid strata_grid(std::uint32_t width, std::uint32_t height, std::uint32_t 
 
 std::uint32_t strata_side(std::uint32_t asked, std::uint32_t width, std::uint32_t height,
                           std::uint32_t groups) {
-    if (asked != kStrataAuto) {
+    if (asked != kStrataAuto && asked != kStrataPiles) {
         const std::uint32_t n = strata_count(width, height, asked);
         if (n > groups)
             throw UsageError("--strata " + std::to_string(asked) + ": " + std::to_string(n) +

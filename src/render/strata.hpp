@@ -30,6 +30,9 @@ double strata_large_density(double share);
 
 // --strata auto: the tile side that the rule below picks.
 constexpr std::uint32_t kStrataAuto = 0xFFFFFFFFu;
+// --strata piles: auto's tiles where the burn-in piles the chains on one
+// path (strata_for_piles, src/render/mlt_options.hpp), else none.
+constexpr std::uint32_t kStrataPiles = 0xFFFFFFFEu;
 // Work-groups of chains per tile that the rule leaves on average, so that
 // most of them are dealt by brightness.
 constexpr std::uint32_t kStrataGroupsPerTile = 4;
@@ -48,9 +51,10 @@ StrataGrid strata_grid(std::uint32_t width, std::uint32_t height, std::uint32_t 
 // How many tiles of side `side` a film has (side 0: 1).
 std::uint32_t strata_count(std::uint32_t width, std::uint32_t height, std::uint32_t side);
 
-// The side of --strata `asked` (0: none; kStrataAuto: the smallest side of at
-// least 8 pixels whose tiles number at most groups / kStrataGroupsPerTile,
-// or 0 if even the whole film is one), for `groups` work-groups of chains.
+// The side of --strata `asked` (0: none; kStrataAuto and kStrataPiles: the
+// smallest side of at least 8 pixels whose tiles number at most groups /
+// kStrataGroupsPerTile, or 0 if even the whole film is one), for `groups`
+// work-groups of chains.
 // Throws UsageError if an asked side has more tiles than groups.
 std::uint32_t strata_side(std::uint32_t asked, std::uint32_t width, std::uint32_t height,
                           std::uint32_t groups);

@@ -1,5 +1,7 @@
 #include "render/strata_buffer.hpp"
 
+#include <stdexcept>
+
 namespace smallmlt {
 
 StrataBuffer::StrataBuffer(const ClContext& cl, const MemoryPlan& plan, const StrataGrid& grid,
@@ -9,12 +11,17 @@ StrataBuffer::StrataBuffer(const ClContext& cl, const MemoryPlan& plan, const St
       weights_(cl, CL_MEM_READ_ONLY, plan.bytes(Buffer::StrataWeights)),
       group_tile_host_(group_tile_.bytes() / sizeof(std::uint32_t), 0),
       group_chains_(group_chains) {
-    std::vector<FilmTile> tiles(tiles_.bytes() / sizeof(FilmTile));
-    std::copy(grid.tiles.begin(), grid.tiles.begin() + std::min(tiles.size(), grid.tiles.size()),
-              tiles.begin());
-    tiles_.write(cl, tiles.data());
+    set_grid(grid);
     group_tile_.fill_zero(cl);
     set_weights({});
+}
+
+void StrataBuffer::set_grid(const StrataGrid& grid) {
+    std::vector<FilmTile> tiles(tiles_.bytes() / sizeof(FilmTile));
+    if (grid.tiles.size() > tiles.size())
+        throw std::logic_error("strata: more tiles than the memory plan's");
+    std::copy(grid.tiles.begin(), grid.tiles.end(), tiles.begin());
+    tiles_.write(cl_, tiles.data());
 }
 
 void StrataBuffer::deal(const std::vector<std::uint32_t>& tiles) {

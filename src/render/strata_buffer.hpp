@@ -19,6 +19,8 @@ class StrataBuffer {
     // group_chains chains to a work-group.
     StrataBuffer(const ClContext& cl, const MemoryPlan& plan, const StrataGrid& grid,
                  std::uint32_t group_chains);
+    // The tiles of `grid` instead (at most as many as the plan's).
+    void set_grid(const StrataGrid& grid);
     // Deals the work-groups to tiles: group g to tile tiles[g].
     void deal(const std::vector<std::uint32_t>& tiles);
     const std::vector<std::uint32_t>& group_tiles() const { return group_tile_host_; }
