@@ -274,7 +274,9 @@ TEST(MpiRender, TwoStageRanksFixOneTargetFromAllTheirSamples) {
         }
     }
     ASSERT_TRUE(ex.complete);
-    ASSERT_EQ(ex.inputs.size(), 1u) << "one sum over ranks fixes the target";
+    // The first sum fixes the target; the second decides the tiles of
+    // --strata piles (MpiStrata.PileTilesAgreeOverRanks).
+    ASSERT_EQ(ex.inputs.size(), 2u) << "one sum over ranks fixes the target";
     // The parts summed (TargetBuffer::fix): per pixel and channel the MLT
     // part's sums, then per pixel its squares, its light behind glass and
     // its samples.
@@ -297,6 +299,42 @@ TEST(MpiRender, TwoStageRanksFixOneTargetFromAllTheirSamples) {
         EXPECT_EQ(weights[std::size_t(r)], expected) << "rank " << r;
 }
 
+// --strata piles on 2 ranks rebuilt here, tiny-caustic at 64x64: rank 0 at
+// seed 4, whose burn-in piles the chains on one path, rank 1 at seed 3,
+// whose does not. With 4,096 threads on each rank both keep auto's 16
+// tiles (one rank's pile is enough); where rank 1's threads give it other
+// tiles (1,024 threads: 4; 256: one) both keep one tile, since their
+// per-tile sums could not be added. Either way the ranks make the same
+// collectives, each with inputs of one length.
+TEST(MpiStrata, PileTilesAgreeOverRanks) {
+    DeviceScene ds = prepare_scene(test::scene("tiny-caustic", 64, 64));
+    for (std::uint32_t other : {4096u, 1024u, 256u}) {
+        Exchange ex(2);
+        std::vector<std::uint32_t> tiles;
+        for (int pass = 0; pass < 4; ++pass) {
+            ex.complete = true;
+            tiles.clear();
+            for (int r = 0; r < 2; ++r) {
+                ReplayRank me(r, ex);
+                MltOptions o;
+                o.threads = r == 0 ? 4096 : other;
+                o.burn_in_iters = 16;
+                o.seed = r == 0 ? 4 : 3;
+                MltRenderer mlt(test::cl(), ds, o);
+                mlt.sample_starts(me);
+                tiles.push_back(mlt.strata_grid().count());
+            }
+            if (ex.complete) break;
+        }
+        ASSERT_TRUE(ex.complete) << other;
+        for (std::size_t call = 0; call < ex.inputs.size(); ++call)
+            EXPECT_EQ(ex.inputs[call][0].size(), ex.inputs[call][1].size())
+                << "call " << call << ", " << other << " threads";
+        EXPECT_EQ(tiles[0], other == 4096 ? 16u : 1u) << other << " threads";
+        EXPECT_EQ(tiles[1], tiles[0]) << other << " threads";
+    }
+}
+
 // Kelemen's weights of 2 ranks rebuilt here: both weigh with one b0, that
 // of the union of their burn-ins (the image scales the large steps' layer,
 // summed over ranks, by rank 0's b0, which must then be every rank's).
@@ -310,7 +348,7 @@ TEST(MpiRender, KelemenRanksWeighWithOneB0) {
     Exchange ex(2);
     std::vector<float> pb;
     std::uint64_t lum = 0, samples = 0;
-    for (int pass = 0; pass < 3; ++pass) {
+    for (int pass = 0; pass < 6; ++pass) { // a pass more than the calls a rank makes
         ex.complete = true;
         pb.clear();
         lum = samples = 0;

@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdio>
 
 using namespace smallmlt;
@@ -168,6 +169,10 @@ TEST(MltStrata, PilesKeepTheTilesWhereChainsPileUp) {
             EXPECT_LT(share, kPileShare);
         EXPECT_EQ(mlt.strata_grid().count(), pile ? 16u : 1u) << "seed " << seed;
         EXPECT_EQ(mlt.report().strata, pile ? 16u : 1u) << "seed " << seed;
+        EXPECT_NE(mlt.report().split, Split::All) << "the chains run";
+        const std::vector<std::uint32_t>& dealt = mlt.group_tiles();
+        EXPECT_EQ(*std::max_element(dealt.begin(), dealt.end()), pile ? 15u : 0u)
+            << "seed " << seed << ": the work-groups dealt to the tiles kept";
         MltOptions chosen = o;
         chosen.strata = pile ? kStrataAuto : 0;
         MltRenderer same(test::cl(), ds, chosen);

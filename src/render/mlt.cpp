@@ -118,11 +118,22 @@ void MltRenderer::sample_starts(RankGroup& ranks) {
                     std::vector<float>(hooks_.zero_cells.size(), 1.0f), hooks_.zero_cells);
     const MltBurnIn::Chains chains{state_, stats_, picks_, this->chains()};
     burn_in_.run(ranks, plan_, scene_, target_, burn_in_film_, chains, grid_, strata_, film_);
-    // Every rank keeps the tiles of --strata piles, or none does.
-    if (opt_.strata == kStrataPiles && grid_.count() > 1 &&
-        ranks.all(!strata_for_piles(opt_, burn_in_.largest_start_share())))
+    if (opt_.strata == kStrataPiles && !piles_keep_tiles(ranks))
         set_grid(smallmlt::strata_grid(ds_.frame.width, ds_.frame.height, 0));
     burn_in_.start_chains(chains, strata_);
+}
+
+bool MltRenderer::piles_keep_tiles(RankGroup& ranks) const {
+    // One sum over ranks, made by every rank, whose answer is the same on
+    // every rank: the ranks that piled, and the ranks' tile counts n (a
+    // rank's threads give its own), the same on all where R sum n^2 =
+    // (sum n)^2. Where they differ their per-tile sums could not be added.
+    const double n = grid_.count();
+    std::vector<double> s{strata_for_piles(opt_, burn_in_.largest_start_share()) ? 1.0 : 0.0, n,
+                          n * n, 1.0};
+    ranks.sum_all(s);
+    const bool same = s[3] * s[2] == s[1] * s[1];
+    return s[0] > 0 && same && n > 1;
 }
 
 void MltRenderer::set_grid(StrataGrid grid) {

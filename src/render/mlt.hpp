@@ -149,6 +149,11 @@ class MltRenderer : public Integrator {
     // The tiles of `grid` in place of grid_'s, after the burn-in's rounds
     // and before the chains start (each tile of grid_ within one of grid's).
     void set_grid(StrataGrid grid);
+    // --strata piles, after the burn-in's rounds: whether the render keeps
+    // grid_'s tiles. Yes where some rank's burn-in piled its chains on one
+    // path (strata_for_piles) and every rank has as many tiles, more than
+    // one; the same answer on every rank.
+    bool piles_keep_tiles(RankGroup& ranks) const;
     // What each tile's large steps weigh, once the target is fixed: their
     // density q on its chains' part and, with Kelemen's weights, p q b0.
     void set_stratum_weights(RankGroup& ranks);
