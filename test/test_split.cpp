@@ -351,10 +351,46 @@ TEST(Split, LightBehindGlassIsWhatSmoothTransmittersBlock) {
     EXPECT_LT(in_water, 0.5);
     EXPECT_EQ(in_opaque_water, 0.0);
 
-    EXPECT_FALSE(chains_pay(0.5, 0.0));
-    EXPECT_TRUE(chains_pay(kChainsPayRatio * 1.01, 0.0));
-    EXPECT_TRUE(chains_pay(0.5, kChainsPayBehindShare * 1.01));
-    EXPECT_FALSE(chains_pay(kChainsPayRatio, kChainsPayBehindShare));
+    for (bool restarting : {false, true}) {
+        const double ratio = chains_pay_ratio(restarting);
+        EXPECT_FALSE(chains_pay(0.5, 0.0, restarting));
+        EXPECT_TRUE(chains_pay(ratio * 1.01, 0.0, restarting));
+        EXPECT_TRUE(chains_pay(0.5, kChainsPayBehindShare * 1.01, restarting));
+        EXPECT_FALSE(chains_pay(ratio, kChainsPayBehindShare, restarting));
+    }
+    EXPECT_EQ(chains_pay_ratio(false), kChainsPayRatio);
+    EXPECT_EQ(chains_pay_ratio(true), kRestartPayFactor * kChainsPayRatio);
+}
+
+// Chains that restart pay from kRestartPayFactor times kChainsPayRatio
+// (split.hpp): cornell-glossy at 32x32, whose MLT part's r lies between the
+// two (5.4 at seed 1, 4,096 threads), runs its chains where they do not
+// restart (--restart 0) and none where --restart auto restarts them every
+// 8 steps (4,096 chains on 1,024 pixels).
+TEST(Split, RestartingChainsPayFromAHigherRatio) {
+    DeviceScene ds = prepare_scene(test::scene("cornell-glossy", 32, 32));
+    auto run = [&](std::uint32_t restart) {
+        MltOptions opt; // the command line's defaults
+        opt.threads = 4096;
+        opt.seed = 1;
+        opt.restart = restart;
+        MltRenderer mlt(test::cl(), ds, opt);
+        mlt.prepare();
+        mlt.step(2);
+        std::printf("--restart %s: r %.3g, restarts every %u steps, split %s, %llu mutations\n",
+                    restart == kRestartAuto ? "auto" : std::to_string(restart).c_str(),
+                    mlt.mlt_relative_variance(), mlt.report().restart_every,
+                    split_name(mlt.split()),
+                    static_cast<unsigned long long>(mlt.stats().mutations));
+        EXPECT_GT(mlt.mlt_relative_variance(), chains_pay_ratio(false)) << "not the scene's r";
+        EXPECT_LT(mlt.mlt_relative_variance(), chains_pay_ratio(true)) << "not the scene's r";
+        return std::make_pair(mlt.split(), mlt.stats().mutations);
+    };
+    const auto free = run(0), restarting = run(kRestartAuto);
+    EXPECT_EQ(free.first, kChainsSplit);
+    EXPECT_GT(free.second, 0u);
+    EXPECT_EQ(restarting.first, Split::All);
+    EXPECT_EQ(restarting.second, 0u);
 }
 
 // The chains beside the OMC part on water-spark (a 1 cm light of radiance

@@ -80,6 +80,19 @@ void BurnInParts::add(const std::vector<float>& samples, const std::vector<bool>
     }
 }
 
+void BurnInParts::add(const BurnInParts& other) {
+    auto sum = [](auto& to, const auto& from) {
+        for (std::size_t i = 0; i < to.size(); ++i)
+            to[i] += from.at(i);
+    };
+    sum(omc, other.omc);
+    sum(rest, other.rest);
+    sum(omc_y2, other.omc_y2);
+    sum(rest_y2, other.rest_y2);
+    sum(count, other.count);
+    sum(behind, other.behind);
+}
+
 double behind_share(double behind_mean, double b) {
     return behind_mean + b > 0 ? behind_mean / (behind_mean + b) : 0;
 }

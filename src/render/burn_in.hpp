@@ -57,6 +57,8 @@ struct BurnInParts {
     // Adds a round's paths, in sample order; with `in`, only those that
     // landed in a pixel p with (*in)[p].
     void add(const std::vector<float>& samples, const std::vector<bool>* in = nullptr);
+    // Adds another's paths, of the same film.
+    void add(const BurnInParts& other);
     // V_o (or V_m) of split.hpp over all pixels (PixelVariance), from a
     // part's sums per pixel (`sums`, RGB; `y2`, squared luminances).
     double variance(const std::vector<double>& sums, const std::vector<double>& y2) const;

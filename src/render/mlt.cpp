@@ -223,13 +223,17 @@ void MltRenderer::prepare(RankGroup& ranks) {
                            : kRestartPileSteps;
     set_stratum_weights(ranks);
     if (split_ == Split::Auto) {
-        bool pay = ranks.all(chains_pay(mlt_relative_variance(), behind_specular_share()));
+        bool pay = ranks.all(
+            chains_pay(mlt_relative_variance(), behind_specular_share(), opt_.restart != 0));
         split_ = pay ? kChainsSplit : Split::All;
         if (!pay) {
             omc_.reset(); // its buffers first, so the memory plan's peak holds
             omc_ = make_omc_part(split_);
         }
     }
+    // Path tracing alone takes every burn-in round's paths: each pixel's
+    // Sobol numbers from the first.
+    burn_in_.settle_cell_rounds(split_ == Split::All);
     if (split_ != Split::All) init_chains();
     prepared_ = true;
     prepare_seconds_ += seconds_since(t0);

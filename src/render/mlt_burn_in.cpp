@@ -195,10 +195,17 @@ bool MltBurnIn::fix_target(RankGroup& ranks, const SceneBuffers& scene, TargetBu
     if (target.omc_cells() == 0) return two_stage;
     // The parts so far chose the cells, and their MLT parts there are the
     // chains' no more: they are the evidence for --split auto, and the image
-    // and the split's costs take only the parts to come.
+    // and the split's costs take only the parts to come, unless no chain
+    // runs (settle_cell_rounds).
     evidence_ = split_evidence(parts_);
-    parts_ = BurnInParts(parts_.count.size());
+    cell_rounds_ = std::move(parts_);
+    parts_ = BurnInParts(cell_rounds_.count.size());
     return true;
+}
+
+void MltBurnIn::settle_cell_rounds(bool whole) {
+    if (whole && !cell_rounds_.count.empty()) parts_.add(cell_rounds_);
+    cell_rounds_ = BurnInParts();
 }
 
 void MltBurnIn::write_picks(const StartPicks& picks, const Chains& chains,

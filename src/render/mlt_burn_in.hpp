@@ -107,6 +107,10 @@ class MltBurnIn {
     // target needs them.
     const BurnInParts& parts() const { return parts_; }
     bool keeps_parts() const { return !parts_.count.empty(); }
+    // Once the split is known: the paths of the rounds that chose the OMC
+    // part's cells, which parts() left out, join it where `whole` (no chain
+    // runs, and path tracing takes every round's whole paths), else go.
+    void settle_cell_rounds(bool whole);
     // V_o and V_c of split.hpp (the film but the OMC part's cells, and
     // those) and the MLT part's mean luminance, from the parts (0 without
     // them).
@@ -167,6 +171,7 @@ class MltBurnIn {
     const MltOptions& opt_;
     ClKernel k_lum_;
     BurnInParts parts_;
+    BurnInParts cell_rounds_; // the parts of the rounds that chose the cells
     BurnInSums sums_;
     double omc_variance_ = 0, cell_variance_ = 0, mlt_part_b_ = 0, largest_start_share_ = 0;
     double chains_stay_ = 0;

@@ -17,13 +17,15 @@ std::vector<std::string> mlt_notes(const MltReport& r) {
         out.push_back(
             std::to_string(n) +
             " samples had a NaN or infinite radiance and were dropped (counted as black)");
+    const bool restarting = r.restart_every != 0;
     if (r.prepared && r.split == Split::All && r.split_asked == Split::Auto)
         out.push_back("path tracing renders this scene's light well (the MLT part's relative "
                       "variance is below " +
-                      std::to_string(int(kChainsPayRatio)) +
+                      std::to_string(int(chains_pay_ratio(restarting))) +
+                      (restarting ? ", as the chains would restart" : "") +
                       "), so no chain ran: --split visible runs them anyway");
     if (r.prepared && r.split != Split::All && r.omc_part &&
-        r.mlt_relative_variance <= kChainsPayRatio &&
+        r.mlt_relative_variance <= chains_pay_ratio(restarting) &&
         r.behind_specular_share > kChainsPayBehindShare) {
         char buf[400];
         std::snprintf(buf, sizeof buf,

@@ -82,8 +82,13 @@ double mlt_part_relative_variance(double mlt_variance, double b, double pixels) 
     return b > 0 && pixels > 0 ? mlt_variance / (pixels * b * b) : 0;
 }
 
-bool chains_pay(double relative_variance, double behind_specular_share) {
-    return relative_variance > kChainsPayRatio || behind_specular_share > kChainsPayBehindShare;
+double chains_pay_ratio(bool restarting) {
+    return restarting ? kRestartPayFactor * kChainsPayRatio : kChainsPayRatio;
+}
+
+bool chains_pay(double relative_variance, double behind_specular_share, bool restarting) {
+    return relative_variance > chains_pay_ratio(restarting) ||
+           behind_specular_share > kChainsPayBehindShare;
 }
 
 } // namespace smallmlt

@@ -117,11 +117,24 @@ constexpr double kOmcMinTimeRatio = 1.0 / 16; // and at least a 16th of it
 // the scenes without them.
 constexpr double kChainsPayRatio = 4.0;
 constexpr double kChainsPayBehindShare = 0.02;
+// Where the chains restart (--restart, restart_steps), a chain moves a few
+// pixels between restarts, so its light at the scale of 8x8 blocks is what
+// the pool it restarts from put there: a path tracer's, with random
+// numbers where per-pixel samples take Sobol points, and with a fifth of
+// the time left to the steps. Restarting chains pay from kRestartPayFactor
+// times kChainsPayRatio. cornell-glossy at 128x128, restarting every 8
+// steps (r = 4.8-5.7, seeds 1-6), read 0.88 / 2.59 / 2.77 times path
+// tracing's MSE / 8x8 / 32x32 error with its chains (doc/RESULTS.md, "Why
+// cornell-glossy's blocks miss at 128x128"); the lowest r of the bench's
+// other scenes there is ajar's 14.5 ("Restarting chains pay from r = 8").
+constexpr double kRestartPayFactor = 2.0;
 // The stratification's gain that threshold implies: per-pixel Sobol samples
 // of the MLT part have this share of independent samples' variance.
 constexpr double kPixelStratification = kChainsPayRatio / kChainCorrelation;
 double mlt_part_relative_variance(double mlt_variance, double b, double pixels);
-bool chains_pay(double relative_variance, double behind_specular_share);
+// The threshold on r of chains that restart, or do not.
+double chains_pay_ratio(bool restarting);
+bool chains_pay(double relative_variance, double behind_specular_share, bool restarting);
 // The OMC part's samples per pixel per step: n_o on the film but the cells,
 // n_c on the cells' pixels.
 struct OmcRates {
