@@ -119,9 +119,10 @@ constexpr double kChainsPayRatio = 4.0;
 constexpr double kChainsPayBehindShare = 0.02;
 // Where the chains restart (--restart, restart_steps), a chain moves a few
 // pixels between restarts, so its light at the scale of 8x8 blocks is what
-// the pool it restarts from put there: a path tracer's, with random
-// numbers where per-pixel samples take Sobol points, and with a fifth of
-// the time left to the steps. Restarting chains pay from kRestartPayFactor
+// the pool it restarts from put there: a path tracer's estimate from the
+// pool's paths (each restart's a fresh set of Sobol points, not one long
+// sequence), with a fifth of the time left to the steps. Restarting chains
+// pay from kRestartPayFactor
 // times kChainsPayRatio. cornell-glossy at 128x128, restarting every 8
 // steps (r = 4.8-5.7, seeds 1-6), read 0.88 / 2.59 / 2.77 times path
 // tracing's MSE / 8x8 / 32x32 error with its chains (doc/RESULTS.md, "Why
