@@ -169,6 +169,9 @@ TEST(BurnInFilm, BurnInSamplesAreThePathTracers) {
         MltRenderer mlt(test::cl(), ds, opt);
         mlt.prepare();
         ASSERT_EQ(mlt.split(), Split::All) << "asked " << split_name(split);
+        if (split == Split::Auto) {
+            ASSERT_GT(mlt.report().omc_cells, 0u) << "no cell was chosen";
+        }
         mlt.step(8);
         const std::uint32_t pixels = 16 * 12, spp = mlt.omc_spp();
         ASSERT_GT(spp, 0u);

@@ -80,17 +80,16 @@ void BurnInParts::add(const std::vector<float>& samples, const std::vector<bool>
     }
 }
 
-void BurnInParts::add(const BurnInParts& other) {
-    auto sum = [](auto& to, const auto& from) {
-        for (std::size_t i = 0; i < to.size(); ++i)
-            to[i] += from.at(i);
-    };
-    sum(omc, other.omc);
-    sum(rest, other.rest);
-    sum(omc_y2, other.omc_y2);
-    sum(rest_y2, other.rest_y2);
-    sum(count, other.count);
-    sum(behind, other.behind);
+BurnInWhole::BurnInWhole(const BurnInParts& parts) : rgb(parts.omc), count(parts.count) {
+    for (std::size_t i = 0; i < rgb.size(); ++i)
+        rgb[i] += parts.rest.at(i);
+}
+
+void BurnInParts::add_whole(const BurnInWhole& other) {
+    for (std::size_t i = 0; i < omc.size(); ++i)
+        omc[i] += other.rgb.at(i);
+    for (std::size_t p = 0; p < count.size(); ++p)
+        count[p] += other.count.at(p);
 }
 
 double behind_share(double behind_mean, double b) {

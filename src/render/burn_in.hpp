@@ -40,6 +40,8 @@ struct SequenceStart {
 // After the burn-in's first `samples` samples.
 SequenceStart burn_in_omc_start(const BurnInFilm& f, std::uint32_t pixels, std::uint64_t samples);
 
+struct BurnInWhole;
+
 // What the burn-in's paths leave for a split (src/render/split.hpp): per
 // pixel and channel the sums of their OMC and MLT parts, and per pixel how
 // many landed there (cl/kernels/mlt.cl, mlt_luminance, writes 8 floats per
@@ -57,8 +59,10 @@ struct BurnInParts {
     // Adds a round's paths, in sample order; with `in`, only those that
     // landed in a pixel p with (*in)[p].
     void add(const std::vector<float>& samples, const std::vector<bool>* in = nullptr);
-    // Adds another's paths, of the same film.
-    void add(const BurnInParts& other);
+    // Adds other paths of the same film as whole paths, to the OMC part's
+    // sums and the counts: for the image of path tracing alone, which adds
+    // the two parts (the squared sums and `behind` stay those of the rest).
+    void add_whole(const BurnInWhole& other);
     // V_o (or V_m) of split.hpp over all pixels (PixelVariance), from a
     // part's sums per pixel (`sums`, RGB; `y2`, squared luminances).
     double variance(const std::vector<double>& sums, const std::vector<double>& y2) const;
@@ -70,6 +74,16 @@ struct BurnInParts {
     // transmitters, that lay behind them: behind_share of the means of
     // `behind` and of the MLT part.
     double behind_specular_share() const;
+};
+
+// Paths' light per pixel, both parts together (RGB), and their count: the
+// image's share of burn-in rounds whose parts are no longer needed, kept in
+// 32 bytes a pixel, not BurnInParts' 80.
+struct BurnInWhole {
+    std::vector<double> rgb;
+    std::vector<std::uint64_t> count;
+    BurnInWhole() = default;
+    explicit BurnInWhole(const BurnInParts& parts);
 };
 
 // V_o (or V_m) of split.hpp, sum_p Var_p over P pixels of one sample's

@@ -198,14 +198,16 @@ bool MltBurnIn::fix_target(RankGroup& ranks, const SceneBuffers& scene, TargetBu
     // and the split's costs take only the parts to come, unless no chain
     // runs (settle_cell_rounds).
     evidence_ = split_evidence(parts_);
-    cell_rounds_ = std::move(parts_);
-    parts_ = BurnInParts(cell_rounds_.count.size());
+    const std::size_t pixels = parts_.count.size();
+    cell_rounds_ = BurnInWhole(parts_);
+    parts_ = BurnInParts(); // its memory first
+    parts_ = BurnInParts(pixels);
     return true;
 }
 
 void MltBurnIn::settle_cell_rounds(bool whole) {
-    if (whole && !cell_rounds_.count.empty()) parts_.add(cell_rounds_);
-    cell_rounds_ = BurnInParts();
+    if (whole && !cell_rounds_.count.empty()) parts_.add_whole(cell_rounds_);
+    cell_rounds_ = BurnInWhole();
 }
 
 void MltBurnIn::write_picks(const StartPicks& picks, const Chains& chains,

@@ -171,7 +171,7 @@ class MltBurnIn {
     const MltOptions& opt_;
     ClKernel k_lum_;
     BurnInParts parts_;
-    BurnInParts cell_rounds_; // the parts of the rounds that chose the cells
+    BurnInWhole cell_rounds_; // the paths of the rounds that chose the cells
     BurnInSums sums_;
     double omc_variance_ = 0, cell_variance_ = 0, mlt_part_b_ = 0, largest_start_share_ = 0;
     double chains_stay_ = 0;
