@@ -36,16 +36,6 @@ float& at(Image& img, int x, int y, int c) {
     return img.rgb[(std::size_t(y) * img.width + x) * 3 + c];
 }
 
-// The message of the InputError that f throws, or "" if it throws none.
-template <typename F> std::string input_error_of(F f) {
-    try {
-        f();
-    } catch (const InputError& e) {
-        return e.what();
-    }
-    return "";
-}
-
 } // namespace
 
 TEST(ImageIo, PfmRoundTripIsExact) {
@@ -143,11 +133,11 @@ TEST(ImageMetrics, MseExcludingLeavesOutThePixelsTheMaskLights) {
 
 TEST(ImageMetrics, SizeMismatchesThrowInputErrorsNamingTheFile) {
     Image img(2, 2), ref(2, 2);
-    EXPECT_EQ(input_error_of([&] { image_mse_excluding(img, ref, Image(3, 2), "m.pfm"); }),
+    EXPECT_EQ(test::input_error_of([&] { image_mse_excluding(img, ref, Image(3, 2), "m.pfm"); }),
               "m.pfm: mask is 3x2, image 2x2");
-    EXPECT_EQ(input_error_of([&] { image_mse_excluding(img, ref, Image(2, 1)); }),
+    EXPECT_EQ(test::input_error_of([&] { image_mse_excluding(img, ref, Image(2, 1)); }),
               "mask: mask is 2x1, image 2x2");
-    EXPECT_EQ(input_error_of([&] { require_same_size(img, Image(2, 3), "a.pfm"); }),
+    EXPECT_EQ(test::input_error_of([&] { require_same_size(img, Image(2, 3), "a.pfm"); }),
               "a.pfm: image is 2x2, reference 2x3");
-    EXPECT_EQ(input_error_of([&] { require_same_size(img, ref, "a.pfm"); }), "");
+    EXPECT_EQ(test::input_error_of([&] { require_same_size(img, ref, "a.pfm"); }), "");
 }

@@ -52,15 +52,10 @@ Scene load(const std::string& dir_name, const std::string& xml,
 // The error of loading, relative to the directory ("s.xml:3: ..."), or "".
 std::string load_error(const std::string& dir_name, const std::string& xml,
                        const std::vector<std::pair<std::string, std::string>>& extra = {}) {
-    try {
-        load(dir_name, xml, extra);
-    } catch (const InputError& e) {
-        std::string msg = e.what();
-        std::string key = "mitsuba-" + dir_name + "/";
-        std::size_t at = msg.find(key);
-        return at == std::string::npos ? msg : msg.substr(at + key.size());
-    }
-    return "";
+    const std::string msg = test::input_error_of([&] { load(dir_name, xml, extra); });
+    const std::string key = "mitsuba-" + dir_name + "/";
+    const std::size_t at = msg.find(key);
+    return at == std::string::npos ? msg : msg.substr(at + key.size());
 }
 
 double area(const Scene& s, std::size_t first = 0) {
@@ -296,14 +291,8 @@ const Material& last_material(const Scene& s) {
 }
 
 std::string textured_error(const std::string& bsdf) {
-    try {
-        textured("texture-errors", bsdf);
-    } catch (const InputError& e) {
-        std::string msg = e.what();
-        std::size_t at = msg.find("s.xml:");
-        return at == std::string::npos ? msg : msg.substr(at);
-    }
-    return "";
+    return test::message_from(test::input_error_of([&] { textured("texture-errors", bsdf); }),
+                              "s.xml:");
 }
 
 } // namespace

@@ -767,15 +767,10 @@ std::string mtl_error(const std::string& name, const std::string& text,
     for (const Png& p : pngs)
         write_png(dir + "/" + p.file, p);
     Scene s;
-    try {
-        load_mtl(dir + "/m.mtl", s);
-    } catch (const InputError& e) {
-        std::string msg = e.what();
-        for (std::size_t at; (at = msg.find(dir + "/")) != std::string::npos;)
-            msg.erase(at, dir.size() + 1);
-        return msg;
-    }
-    return "";
+    std::string msg = test::input_error_of([&] { load_mtl(dir + "/m.mtl", s); });
+    for (std::size_t at; (at = msg.find(dir + "/")) != std::string::npos;)
+        msg.erase(at, dir.size() + 1);
+    return msg;
 }
 
 } // namespace

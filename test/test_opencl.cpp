@@ -15,22 +15,9 @@
 
 using namespace smallmlt;
 
-namespace {
-
-std::string error_of(const std::function<void()>& f) {
-    try {
-        f();
-    } catch (const InputError& e) {
-        return e.what();
-    }
-    return "";
-}
-
-} // namespace
-
 TEST(OpenCl, BuildFailurePrintsTheLogWithFileAndLine) {
     // A define that breaks the shared header: the log must point into it.
-    std::string msg = error_of([] {
+    std::string msg = test::input_error_of([] {
         test::cl().build({"cl/core/shared_types.h", "cl/core/rng.h"}, "#define u32 @\n");
     });
     EXPECT_NE(msg.find("kernel build failed (CL_BUILD_PROGRAM_FAILURE)"), std::string::npos) << msg;
@@ -56,7 +43,7 @@ TEST(OpenCl, RefusedLaunchNamesKernelAndSizes) {
     ClBuffer out(test::cl(), CL_MEM_WRITE_ONLY, 256 * sizeof(cl_uint));
     k.set_args(out);
     std::size_t too_big = test::cl().device().max_work_group * 2;
-    std::string msg = error_of([&] { k.enqueue(test::cl(), too_big, too_big); });
+    std::string msg = test::input_error_of([&] { k.enqueue(test::cl(), too_big, too_big); });
     EXPECT_NE(msg.find("kernel probe_layout over " + std::to_string(too_big) + " work-items"),
               std::string::npos)
         << msg;
@@ -105,10 +92,10 @@ TEST(OpenCl, OnlyThe64BitFilmNeedsInt64Atomics) {
     d.int64_atomics = true;
     MltOptions film64;
     film64.film_atomics64 = true;
-    EXPECT_EQ(error_of([&] { mlt_require_device(d, film64); }), "");
+    EXPECT_EQ(test::input_error_of([&] { mlt_require_device(d, film64); }), "");
     d.int64_atomics = false;
-    EXPECT_EQ(error_of([&] { mlt_require_device(d, MltOptions()); }), "");
-    std::string msg = error_of([&] { mlt_require_device(d, film64); });
+    EXPECT_EQ(test::input_error_of([&] { mlt_require_device(d, MltOptions()); }), "");
+    std::string msg = test::input_error_of([&] { mlt_require_device(d, film64); });
     EXPECT_NE(msg.find("lacks cl_khr_int64_base_atomics"), std::string::npos) << msg;
     EXPECT_NE(msg.find("--film-atomics 64"), std::string::npos) << msg;
 }

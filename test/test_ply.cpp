@@ -120,14 +120,7 @@ bool same(const SceneTriangle& a, const SceneTriangle& b) {
 }
 
 std::string ply_error(const std::string& ply) {
-    try {
-        load_ply("errors", ply);
-    } catch (const InputError& e) {
-        std::string msg = e.what();
-        std::size_t at = msg.find("mesh.ply:");
-        return at == std::string::npos ? msg : msg.substr(at);
-    }
-    return "";
+    return test::message_from(test::input_error_of([&] { load_ply("errors", ply); }), "mesh.ply:");
 }
 
 } // namespace

@@ -1,6 +1,7 @@
 // Helpers shared by the tests: one OpenCL context per test binary, scene
 // loading with overrides, and small statistics.
 #pragma once
+#include "base/error.hpp"
 #include "device/ocl.hpp"
 #include "device/scene_buffers.hpp"
 #include "image/image.hpp"
@@ -250,6 +251,22 @@ inline std::array<double, 4> quadrant_shares(const Image& img) {
 
 inline void write_file(const std::string& path, const std::string& text) {
     std::ofstream(path) << text;
+}
+
+// The message of the InputError that f throws, or "" if it throws none.
+template <class F> std::string input_error_of(F&& f) {
+    try {
+        f();
+    } catch (const InputError& e) {
+        return e.what();
+    }
+    return "";
+}
+
+// `msg` from the first `from` in it on; all of it where there is none.
+inline std::string message_from(const std::string& msg, const std::string& from) {
+    const std::size_t at = msg.find(from);
+    return at == std::string::npos ? msg : msg.substr(at);
 }
 
 } // namespace smallmlt::test
