@@ -76,6 +76,7 @@ TEST(MltRestart, AutoRestartsWhereTheChainsAreAtLeastThePixels) {
 //   for those that do not, 1), so the render is bit for bit the one of
 //   --restart 16 given.
 // - cornell-glass at 64x64, 64 rounds: neither.
+// The summary gives the stay where the cells measured it, and only there.
 TEST(MltRestart, AutoRestartsWhereChainsPileUp) {
     MltOptions opt;
     EXPECT_EQ(restart_pile_steps(opt, 2 * kPileShare, 0), kRestartPileSteps);
@@ -119,6 +120,11 @@ TEST(MltRestart, AutoRestartsWhereChainsPileUp) {
             EXPECT_GT(stay, 2 * kPileStay) << c.scene << " " << c.seed;
         else
             EXPECT_LT(stay, kPileStay / 4) << c.scene << " " << c.seed;
+        // The summary says the stay the rule read.
+        char said[64];
+        std::snprintf(said, sizeof said, "; the chains' stay %.3g (", stay);
+        EXPECT_EQ(r.chains_stay, stay) << c.scene << " " << c.seed;
+        EXPECT_NE(mlt_summary(r).find(said), std::string::npos) << mlt_summary(r);
         const bool restarts = c.pile || c.stay;
         EXPECT_EQ(r.restart_every, restarts ? kRestartPileSteps : 0u) << c.scene << " " << c.seed;
         EXPECT_EQ(r.restarts, restarts ? 32u / kRestartPileSteps : 0u) << c.scene << " " << c.seed;
@@ -131,6 +137,19 @@ TEST(MltRestart, AutoRestartsWhereChainsPileUp) {
         EXPECT_EQ(r.omc_cells, restarting.report().omc_cells) << c.scene << " " << c.seed;
         EXPECT_TRUE(mlt.image().rgb == restarting.image().rgb) << c.scene << " " << c.seed;
     }
+    // Without the OMC part's cells the stay is not measured, and the
+    // summary does not give it.
+    DeviceScene ds = prepare_scene(test::scene("cornell-glass", 32, 32));
+    MltOptions cells_off;
+    cells_off.threads = 256;
+    cells_off.burn_in_iters = 4;
+    cells_off.omc_cells = false;
+    MltRenderer mlt(test::cl(), ds, cells_off);
+    mlt.prepare();
+    mlt.step(1);
+    EXPECT_LT(mlt.report().chains_stay, 0);
+    EXPECT_EQ(mlt_summary(mlt.report()).find("the chains' stay"), std::string::npos)
+        << mlt_summary(mlt.report());
 }
 
 // --strata piles, the default: auto's tiles where the burn-in piled the

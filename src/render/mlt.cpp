@@ -393,6 +393,7 @@ MltReport MltRenderer::report() const {
     r.restart_every = opt_.restart;
     r.restart_samples = opt_.restart && opt_.burn_in && kelemen_in_force(opt_);
     r.restarts = restarts_;
+    r.chains_stay = burn_in_.stay_measured() ? burn_in_.chains_stay() : -1;
     if (!kelemen_pb_.empty()) {
         double pb = 0; // c b0 of the whole film: the tiles' c B0 by their areas
         for (std::uint32_t t = 0; t < grid_.count(); ++t)

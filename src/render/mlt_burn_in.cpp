@@ -180,6 +180,7 @@ bool MltBurnIn::fix_target(RankGroup& ranks, const SceneBuffers& scene, TargetBu
                            bool two_stage, bool omc) {
     const std::uint32_t w = scene.frame.width, h = scene.frame.height;
     target.fix(ranks, w, h, parts_, two_stage, omc, chain_steps(opt_, w), &chains_stay_);
+    stay_measured_ = omc;
     // Where the stay will make --restart auto restart (MltRenderer::prepare),
     // the cells are chosen again from the same parts, for the steps of chains
     // that restart: on veach-mis at 512x384, 8x8-block error 1.91 of path

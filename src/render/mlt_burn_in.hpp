@@ -125,6 +125,8 @@ class MltBurnIn {
     // steps of --restart auto before it resolves (omc_cells' `stay`; 0
     // without cells).
     double chains_stay() const { return chains_stay_; }
+    // Whether the cells were chosen, and so chains_stay measured.
+    bool stay_measured() const { return stay_measured_; }
     // What --split auto decides by (split.hpp, chains_pay): V_m, the MLT
     // part's mean luminance and the share of its light behind smooth
     // transmitters, from the parts before any cell went to the OMC part.
@@ -175,6 +177,7 @@ class MltBurnIn {
     BurnInSums sums_;
     double omc_variance_ = 0, cell_variance_ = 0, mlt_part_b_ = 0, largest_start_share_ = 0;
     double chains_stay_ = 0;
+    bool stay_measured_ = false;
     SplitEvidence evidence_;
     std::uint32_t rounds_ = 0;        // rounds run, those of restarts included
     std::optional<StartPicks> picks_; // run()'s rounds, until start_chains

@@ -1,5 +1,7 @@
 #include "render/mlt_report.hpp"
 
+#include "render/mlt_options.hpp"
+
 #include <cstdio>
 
 namespace smallmlt {
@@ -111,6 +113,11 @@ std::string mlt_summary(const MltReport& r) {
         std::snprintf(buf, sizeof buf, "; chains restarted every %u steps, %u times%s",
                       r.restart_every, r.restarts,
                       r.restart_samples ? ", their samples large steps'" : "");
+        out += buf;
+    }
+    if (r.chains_stay >= 0) {
+        std::snprintf(buf, sizeof buf, "; the chains' stay %.3g (--restart auto restarts above %g)",
+                      r.chains_stay, kPileStay);
         out += buf;
     }
     if (r.strata > 1) {

@@ -33,9 +33,13 @@ struct MltReport {
     bool kelemen = false;
     float kelemen_pb = 0;                          // c b0: c the uniform samples per mutation
     std::uint32_t restart_every = 0, restarts = 0; // --restart's steps; restarts so far
-    bool restart_samples = false;                  // the restarts' burn-in samples are large steps'
-    std::uint32_t strata = 1;                      // tiles of stratified MLT
-    bool strata_piles = false;                     // those of --strata piles, kept
+    // Where the chains would stay on small bright areas, their error over
+    // their error were they free (MltBurnIn::chains_stay); below 0 where the
+    // cells were not chosen, so it was not measured.
+    double chains_stay = -1;
+    bool restart_samples = false; // the restarts' burn-in samples are large steps'
+    std::uint32_t strata = 1;     // tiles of stratified MLT
+    bool strata_piles = false;    // those of --strata piles, kept
     bool two_stage = false;
     std::uint32_t target_cells = 1;
     std::uint32_t omc_cells = 0; // cells the OMC part renders whole
