@@ -122,13 +122,12 @@ constexpr double kChainsPayBehindShare = 0.02;
 // the pool it restarts from put there: a path tracer's estimate from the
 // pool's paths (each restart's a fresh set of Sobol points, not one long
 // sequence), with a fifth of the time left to the steps. Restarting chains
-// pay from kRestartPayFactor
-// times kChainsPayRatio. cornell-glossy at 128x128, restarting every 8
-// steps (r = 4.8-5.7, seeds 1-6), read 0.88 / 2.59 / 2.77 times path
-// tracing's MSE / 8x8 / 32x32 error with its chains (doc/RESULTS.md, "Why
-// cornell-glossy's blocks miss at 128x128"), and none without them; of the
-// bench's other scenes whose chains run there by r, the lowest r is ajar's
-// 14.5 ("Restarting chains pay from r = 8").
+// pay from kRestartPayFactor times kChainsPayRatio. cornell-glossy at
+// 128x128, restarting every 8 steps (r = 4.8-5.7, seeds 1-6), read 0.88 /
+// 2.59 / 2.77 times path tracing's MSE / 8x8 / 32x32 error with its chains
+// (doc/RESULTS.md, "Why cornell-glossy's blocks miss at 128x128"), and none
+// without them; of the bench's other scenes whose chains run there by r,
+// the lowest r is ajar's 14.5 ("Restarting chains pay from r = 8").
 constexpr double kRestartPayFactor = 2.0;
 // The stratification's gain that threshold implies: per-pixel Sobol samples
 // of the MLT part have this share of independent samples' variance.
