@@ -218,6 +218,70 @@ TEST(OmcCells, LonePixelsLoseTheirExcess) {
         EXPECT_TRUE(e[p] != 0 || kept[p] == 0) << "pixel " << p << " gained an excess";
 }
 
+// A pixel's neighbours' mean is their light over their samples, without
+// its own: on a 3 x 3 film whose pixel i holds i + 1 samples of luminance
+// 2 i, the centre's is (sum of 2 i (i + 1), i != 4) / (sum of i + 1,
+// i != 4) = 440 / 40; the corner (0, 0)'s, of pixels 1, 3 and 4, is
+// (4 + 24 + 40) / (2 + 4 + 5). Without samples around it, a pixel's is 0.
+TEST(OmcCells, NeighbourMeansLeaveThePixelOut) {
+    ASSERT_EQ(kNeighbourReach, 1u);
+    BurnInParts parts(9);
+    for (std::size_t i = 0; i < 9; ++i) {
+        for (int c = 0; c < 3; ++c)
+            parts.rest[3 * i + c] = 2.0 * double(i) * double(i + 1);
+        parts.count[i] = i + 1;
+    }
+    std::vector<double> m = neighbour_means(parts, 3, 3);
+    EXPECT_NEAR(m[4], 440.0 / 40.0, 1e-12);
+    EXPECT_NEAR(m[0], 68.0 / 11.0, 1e-12);
+    BurnInParts lone(9);
+    for (int c = 0; c < 3; ++c)
+        lone.rest[3 * 4 + c] = 5;
+    lone.count[4] = 1;
+    m = neighbour_means(lone, 3, 3);
+    EXPECT_EQ(m[4], 0.0) << "no other pixel holds a sample";
+    EXPECT_NEAR(m[0], 5.0, 1e-12);
+}
+
+// Parts of a 64 x 64 film of two samples per pixel of luminance 1, but for
+// a 6 x 6 patch of mean luminance 10,000: in every pixel (`even`), or, as a
+// burn-in of few samples finds it, in the white squares of a checkerboard at
+// twice that, the black ones dark.
+BurnInParts bright_patch(bool even) {
+    const std::uint32_t w = 64;
+    BurnInParts parts(w * w);
+    for (std::uint32_t y = 0; y < w; ++y)
+        for (std::uint32_t x = 0; x < w; ++x) {
+            const std::size_t p = std::size_t(y) * w + x;
+            const bool patch = x >= 28 && x < 34 && y >= 28 && y < 34;
+            const double l = !patch ? 1.0 : even ? 1e4 : (x + y) % 2 ? 0.0 : 2e4;
+            for (int c = 0; c < 3; ++c)
+                parts.rest[3 * p + c] = 2 * l;
+            parts.rest_y2[p] = 2 * l * l;
+            parts.count[p] = 2;
+        }
+    return parts;
+}
+
+// The chains' stay by each pixel's samples reads a patch whose light fell
+// on half its pixels, at twice their mean, as more than three times the
+// stay of the patch evenly lit; by the neighbours' samples it reads both
+// within 15%: only the patch's rim differs, where a pixel's neighbours lie
+// partly outside the patch and, in the checkerboard, a white one's are not
+// half white. Both are positive.
+TEST(OmcCells, StayByNeighboursReadsUnevenLightAsEven) {
+    const TargetCells cells{3u, 8u}; // 8 x 8 pixels each
+    ChainsStay even, uneven;
+    smallmlt::omc_cells(cells, 64, 64, bright_patch(true), kLargeStep, &even);
+    smallmlt::omc_cells(cells, 64, 64, bright_patch(false), kLargeStep, &uneven);
+    std::printf("stay by own samples %.4g even, %.4g uneven; by neighbours' %.4g, %.4g\n", even.own,
+                uneven.own, even.neighbours, uneven.neighbours);
+    EXPECT_GT(even.own, 0.0);
+    EXPECT_GT(even.neighbours, 0.0);
+    EXPECT_GT(uneven.own, 3 * even.own);
+    EXPECT_NEAR(uneven.neighbours / even.neighbours, 1.0, 0.15);
+}
+
 // The bright pixels' error with the chains does not fall as their light
 // does. On a 32 x 2 film (b = 13) with three bright pixels, two in the
 // first cell and one in the second, giving the first cell to the OMC part

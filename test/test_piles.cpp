@@ -62,7 +62,8 @@ TEST(MltRestart, AutoRestartsWhereTheChainsAreAtLeastThePixels) {
 // --restart auto where the chains are fewer than the pixels: restarts
 // every 16 steps after a burn-in whose brightest path took more than
 // kPileShare of the chains, or whose cells found the chains' error where
-// they would stay above kPileStay times their error were they free; else
+// they would stay above kPileStay times their error were they free by each
+// pixel's samples, or above kPileStayNeighbours by its neighbours'; else
 // never. A number given is kept. Renders with a quarter as many chains as
 // pixels:
 // - tiny-caustic at 64x64, 64 burn-in rounds: at seed 4 the burn-in finds
@@ -79,15 +80,16 @@ TEST(MltRestart, AutoRestartsWhereTheChainsAreAtLeastThePixels) {
 // The summary gives the stay where the cells measured it, and only there.
 TEST(MltRestart, AutoRestartsWhereChainsPileUp) {
     MltOptions opt;
-    EXPECT_EQ(restart_pile_steps(opt, 2 * kPileShare, 0), kRestartPileSteps);
-    EXPECT_EQ(restart_pile_steps(opt, 0, 2 * kPileStay), kRestartPileSteps);
-    EXPECT_EQ(restart_pile_steps(opt, kPileShare, kPileStay), 0u);
+    EXPECT_EQ(restart_pile_steps(opt, 2 * kPileShare, {}), kRestartPileSteps);
+    EXPECT_EQ(restart_pile_steps(opt, 0, {2 * kPileStay, 0}), kRestartPileSteps);
+    EXPECT_EQ(restart_pile_steps(opt, 0, {0, 2 * kPileStayNeighbours}), kRestartPileSteps);
+    EXPECT_EQ(restart_pile_steps(opt, kPileShare, {kPileStay, kPileStayNeighbours}), 0u);
     MltOptions given = opt;
     given.restart = 0;
-    EXPECT_EQ(restart_pile_steps(given, 1.0, 1e9), 0u);
+    EXPECT_EQ(restart_pile_steps(given, 1.0, {1e9, 1e9}), 0u);
     MltOptions no_burn_in = opt;
     no_burn_in.burn_in = false;
-    EXPECT_EQ(restart_pile_steps(no_burn_in, 1.0, 1e9), 0u);
+    EXPECT_EQ(restart_pile_steps(no_burn_in, 1.0, {1e9, 1e9}), 0u);
     struct Case {
         const char* scene;
         std::uint32_t side, rounds;
@@ -107,23 +109,32 @@ TEST(MltRestart, AutoRestartsWhereChainsPileUp) {
         mlt.prepare();
         mlt.step(32);
         const MltReport r = mlt.report();
-        const double share = mlt.largest_start_share(), stay = mlt.chains_stay();
+        const double share = mlt.largest_start_share();
+        const ChainsStay stay = mlt.chains_stay();
         std::printf("%s %ux%u, seed %llu: the brightest path took %.3g%% of the chains (%.1f), "
-                    "stay %.3g, b +-%.2f%%; restarts every %u steps; %u cells to the OMC part\n",
+                    "stay %.3g (own) %.3g (neighbours'), b +-%.2f%%; restarts every %u steps; "
+                    "%u cells to the OMC part\n",
                     c.scene, c.side, c.side, (unsigned long long)c.seed, 100 * share,
-                    share * o.threads, stay, 100 * r.b_rel_error, r.restart_every, r.omc_cells);
+                    share * o.threads, stay.own, stay.neighbours, 100 * r.b_rel_error,
+                    r.restart_every, r.omc_cells);
         if (c.pile)
             EXPECT_GT(share, 4 * kPileShare) << c.scene << " " << c.seed;
         else
             EXPECT_LT(share, kPileShare) << c.scene << " " << c.seed;
-        if (c.stay)
-            EXPECT_GT(stay, 2 * kPileStay) << c.scene << " " << c.seed;
-        else
-            EXPECT_LT(stay, kPileStay / 4) << c.scene << " " << c.seed;
-        // The summary says the stay the rule read.
-        char said[64];
-        std::snprintf(said, sizeof said, "; the chains' stay %.3g (", stay);
-        EXPECT_EQ(r.chains_stay, stay) << c.scene << " " << c.seed;
+        if (c.stay) {
+            EXPECT_GT(stay.own, 2 * kPileStay) << c.scene << " " << c.seed;
+            EXPECT_GT(stay.neighbours, 2 * kPileStayNeighbours) << c.scene << " " << c.seed;
+        } else {
+            EXPECT_LT(stay.own, kPileStay / 4) << c.scene << " " << c.seed;
+            EXPECT_LT(stay.neighbours, kPileStayNeighbours / 4) << c.scene << " " << c.seed;
+        }
+        // The summary says the stays the rule read.
+        char said[96];
+        std::snprintf(said, sizeof said, "; the chains' stay %.3g by each pixel's samples, %.3g by",
+                      stay.own, stay.neighbours);
+        EXPECT_TRUE(r.stay_measured) << c.scene << " " << c.seed;
+        EXPECT_EQ(r.chains_stay.own, stay.own) << c.scene << " " << c.seed;
+        EXPECT_EQ(r.chains_stay.neighbours, stay.neighbours) << c.scene << " " << c.seed;
         EXPECT_NE(mlt_summary(r).find(said), std::string::npos) << mlt_summary(r);
         const bool restarts = c.pile || c.stay;
         EXPECT_EQ(r.restart_every, restarts ? kRestartPileSteps : 0u) << c.scene << " " << c.seed;
@@ -147,7 +158,7 @@ TEST(MltRestart, AutoRestartsWhereChainsPileUp) {
     MltRenderer mlt(test::cl(), ds, cells_off);
     mlt.prepare();
     mlt.step(1);
-    EXPECT_LT(mlt.report().chains_stay, 0);
+    EXPECT_FALSE(mlt.report().stay_measured);
     EXPECT_EQ(mlt_summary(mlt.report()).find("the chains' stay"), std::string::npos)
         << mlt_summary(mlt.report());
 }

@@ -393,7 +393,8 @@ MltReport MltRenderer::report() const {
     r.restart_every = opt_.restart;
     r.restart_samples = opt_.restart && opt_.burn_in && kelemen_in_force(opt_);
     r.restarts = restarts_;
-    r.chains_stay = burn_in_.stay_measured() ? burn_in_.chains_stay() : -1;
+    r.stay_measured = burn_in_.stay_measured();
+    if (r.stay_measured) r.chains_stay = burn_in_.chains_stay();
     if (!kelemen_pb_.empty()) {
         double pb = 0; // c b0 of the whole film: the tiles' c B0 by their areas
         for (std::uint32_t t = 0; t < grid_.count(); ++t)

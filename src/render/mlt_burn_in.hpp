@@ -124,7 +124,7 @@ class MltBurnIn {
     // their error were they free, as the OMC part's cells found it for the
     // steps of --restart auto before it resolves (omc_cells' `stay`; 0
     // without cells).
-    double chains_stay() const { return chains_stay_; }
+    const ChainsStay& chains_stay() const { return chains_stay_; }
     // Whether the cells were chosen, and so chains_stay measured.
     bool stay_measured() const { return stay_measured_; }
     // What --split auto decides by (split.hpp, chains_pay): V_m, the MLT
@@ -176,7 +176,7 @@ class MltBurnIn {
     BurnInWhole cell_rounds_; // the paths of the rounds that chose the cells
     BurnInSums sums_;
     double omc_variance_ = 0, cell_variance_ = 0, mlt_part_b_ = 0, largest_start_share_ = 0;
-    double chains_stay_ = 0;
+    ChainsStay chains_stay_;
     bool stay_measured_ = false;
     SplitEvidence evidence_;
     std::uint32_t rounds_ = 0;        // rounds run, those of restarts included

@@ -220,15 +220,29 @@ inline bool piled_on_one_path(double largest_share) {
 // whose lamps' images on the plates held the chains: 8x8-block error 7.0
 // times PT's, 1.15 with these restarts and the cells chosen for them
 // (MltBurnIn::fix_target; doc/RESULTS.md, "Piles of chains on one path").
+// That is the stay by each pixel's own samples (ChainsStay::own), which
+// reads high where they are few: with more it fell to 0.28-0.70 on
+// veach-mis (5.3 to 43 burn-in samples per pixel) and would not restart
+// it. The stay by the neighbours' samples read 0.05-0.36 there from 1.3
+// samples per pixel on, and at most 0.009 on the bench's other scenes but
+// tiny-caustic at 32, 0.018-0.041 where its own stay was above 1 too:
+// it restarts above kPileStayNeighbours (doc/RESULTS.md, "The chains'
+// stay, two ways").
 constexpr double kPileStay = 1.0;
+constexpr double kPileStayNeighbours = 0.03;
 constexpr std::uint32_t kRestartPileSteps = 16;
+// Whether chains whose stay is `stay` would stay on small bright areas for
+// long enough that restarting them pays: where either measure says so.
+inline bool chains_would_stay(const ChainsStay& stay) {
+    return stay.own > kPileStay || stay.neighbours > kPileStayNeighbours;
+}
 // --restart auto's steps between restarts, where restart_steps gave none,
 // after a burn-in that started a share `largest_share` of the chains on its
-// brightest path and found their error where they would stay `stay` times
-// their error were they free.
-inline std::uint32_t restart_pile_steps(const MltOptions& opt, double largest_share, double stay) {
+// brightest path and found the chains' stay `stay`.
+inline std::uint32_t restart_pile_steps(const MltOptions& opt, double largest_share,
+                                        const ChainsStay& stay) {
     return opt.restart == kRestartAuto && kelemen_in_force(opt) && opt.burn_in &&
-                   (piled_on_one_path(largest_share) || stay > kPileStay)
+                   (piled_on_one_path(largest_share) || chains_would_stay(stay))
                ? kRestartPileSteps
                : 0;
 }

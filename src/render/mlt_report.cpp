@@ -115,9 +115,11 @@ std::string mlt_summary(const MltReport& r) {
                       r.restart_samples ? ", their samples large steps'" : "");
         out += buf;
     }
-    if (r.chains_stay >= 0) {
-        std::snprintf(buf, sizeof buf, "; the chains' stay %.3g (--restart auto restarts above %g)",
-                      r.chains_stay, kPileStay);
+    if (r.stay_measured) {
+        std::snprintf(buf, sizeof buf,
+                      "; the chains' stay %.3g by each pixel's samples, %.3g by its neighbours' "
+                      "(--restart auto restarts above %g or %g)",
+                      r.chains_stay.own, r.chains_stay.neighbours, kPileStay, kPileStayNeighbours);
         out += buf;
     }
     if (r.strata > 1) {

@@ -2,6 +2,7 @@
 // user, made from a plain account of the render (MltRenderer::report).
 #pragma once
 #include "render/mlt_stats.hpp"
+#include "render/omc_cells.hpp"
 #include "render/split.hpp"
 
 #include <cstdint>
@@ -34,9 +35,10 @@ struct MltReport {
     float kelemen_pb = 0;                          // c b0: c the uniform samples per mutation
     std::uint32_t restart_every = 0, restarts = 0; // --restart's steps; restarts so far
     // Where the chains would stay on small bright areas, their error over
-    // their error were they free (MltBurnIn::chains_stay); below 0 where the
-    // cells were not chosen, so it was not measured.
-    double chains_stay = -1;
+    // their error were they free (MltBurnIn::chains_stay), measured where the
+    // cells were chosen.
+    ChainsStay chains_stay;
+    bool stay_measured = false;
     bool restart_samples = false; // the restarts' burn-in samples are large steps'
     std::uint32_t strata = 1;     // tiles of stratified MLT
     bool strata_piles = false;    // those of --strata piles, kept

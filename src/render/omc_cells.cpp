@@ -48,19 +48,56 @@ std::vector<double> light_areas(const std::vector<double>& means, std::uint32_t 
     return area;
 }
 
+namespace {
+
+// Calls visit(q) for each pixel q other than (x, y) within `reach` of it on
+// a width x height film.
+template <class Visit>
+void for_each_neighbour(std::uint32_t x, std::uint32_t y, std::uint32_t reach, std::uint32_t width,
+                        std::uint32_t height, Visit visit) {
+    const std::uint32_t r = reach;
+    for (std::uint32_t qy = y > r ? y - r : 0; qy < std::min(height, y + r + 1); ++qy)
+        for (std::uint32_t qx = x > r ? x - r : 0; qx < std::min(width, x + r + 1); ++qx)
+            if (qx != x || qy != y) visit(std::size_t(qy) * width + qx);
+}
+
+} // namespace
+
 std::vector<double> without_lone_pixels(std::vector<double> excess, std::uint32_t width,
                                         std::uint32_t height) {
-    const std::uint32_t r = kLoneReach;
     const std::vector<double> all = excess;
     for (std::uint32_t y = 0; y < height; ++y)
         for (std::uint32_t x = 0; x < width; ++x) {
             bool beside = false;
-            for (std::uint32_t qy = y > r ? y - r : 0; qy < std::min(height, y + r + 1); ++qy)
-                for (std::uint32_t qx = x > r ? x - r : 0; qx < std::min(width, x + r + 1); ++qx)
-                    beside |= (qx != x || qy != y) && all[std::size_t(qy) * width + qx] > 0;
+            for_each_neighbour(x, y, kLoneReach, width, height,
+                               [&](std::size_t q) { beside |= all[q] > 0; });
             if (!beside) excess[std::size_t(y) * width + x] = 0;
         }
     return excess;
+}
+
+std::vector<double> neighbour_means(const BurnInParts& parts, std::uint32_t width,
+                                    std::uint32_t height) {
+    std::vector<double> means(std::size_t(width) * height, 0.0);
+    for (std::uint32_t y = 0; y < height; ++y)
+        for (std::uint32_t x = 0; x < width; ++x) {
+            double light = 0, samples = 0;
+            for_each_neighbour(x, y, kNeighbourReach, width, height, [&](std::size_t q) {
+                light += parts.luminance(parts.rest, q);
+                samples += double(parts.count[q]);
+            });
+            if (samples > 0) means[std::size_t(y) * width + x] = light / samples;
+        }
+    return means;
+}
+
+std::vector<double> stay_excess(const std::vector<double>& means, double b, std::uint32_t width,
+                                std::uint32_t height, const ChainSteps& steps) {
+    const std::vector<double> area = light_areas(means, width, height, steps.film_pixels);
+    std::vector<double> excess(means.size());
+    for (std::size_t p = 0; p < means.size(); ++p)
+        excess[p] = chain_correlation(means[p], b, area[p], steps.large) - 1;
+    return without_lone_pixels(std::move(excess), width, height);
 }
 
 namespace {
@@ -130,19 +167,19 @@ std::vector<std::uint32_t> choose(std::vector<Candidate> open, const ChainsError
 } // namespace
 
 std::vector<bool> omc_cells(const TargetCells& cells, std::uint32_t width, std::uint32_t height,
-                            const BurnInParts& parts, const ChainSteps& steps, double* stay) {
+                            const BurnInParts& parts, const ChainSteps& steps, ChainsStay* stay) {
     const std::uint32_t n = target_cell_count(cells, height);
     std::vector<PixelVariance> variance(n);
     std::vector<double> lum(n, 0.0), stuck(n, 0.0), behind(n, 0.0), samples(n, 0.0), pixels(n, 0.0);
+    std::vector<double> stuck_by_neighbours(n, 0.0);
     const double b = parts.mean(parts.rest);
     std::vector<double> means(std::size_t(width) * height, 0.0);
     for (std::size_t p = 0; p < means.size(); ++p)
         if (parts.count[p] > 0) means[p] = parts.luminance(parts.rest, p) / double(parts.count[p]);
-    const std::vector<double> area = light_areas(means, width, height, steps.film_pixels);
-    std::vector<double> excess(means.size());
-    for (std::size_t p = 0; p < means.size(); ++p)
-        excess[p] = chain_correlation(means[p], b, area[p], steps.large) - 1;
-    excess = without_lone_pixels(std::move(excess), width, height);
+    const std::vector<double> excess = stay_excess(means, b, width, height, steps);
+    const std::vector<double> excess_by_neighbours =
+        stay ? stay_excess(neighbour_means(parts, width, height), b, width, height, steps)
+             : std::vector<double>(means.size(), 0.0);
     for (std::uint32_t y = 0; y < height; ++y)
         for (std::uint32_t x = 0; x < width; ++x) {
             const std::size_t p = std::size_t(y) * width + x;
@@ -151,12 +188,14 @@ std::vector<bool> omc_cells(const TargetCells& cells, std::uint32_t width, std::
             variance[c].add(l, parts.rest_y2[p], parts.count[p]);
             lum[c] += l;
             stuck[c] += l * excess[p];
+            stuck_by_neighbours[c] += l * excess_by_neighbours[p];
             behind[c] += parts.behind[p];
             samples[c] += double(parts.count[p]);
             pixels[c] += 1;
         }
     std::vector<Candidate> open;
     ChainsError film;
+    double film_stuck_by_neighbours = 0;
     for (std::uint32_t c = 0; c < n; ++c) {
         if (!(lum[c] > 0)) continue; // no light found: the chains'
         // Sums over the cell's paths to light, as L_c = P_c b_c.
@@ -165,12 +204,16 @@ std::vector<bool> omc_cells(const TargetCells& cells, std::uint32_t width, std::
                              stuck[c] * per_path};
         film.light += cand.light;
         film.stuck += cand.stuck;
+        film_stuck_by_neighbours += stuck_by_neighbours[c] * per_path;
         if (behind_share(behind[c] / samples[c], lum[c] / samples[c]) > kChainsPayBehindShare)
             continue;
         open.push_back(cand);
     }
     film.light_0 = film.light;
-    if (stay) *stay = film.light > 0 ? film.stuck / film.light : 0.0; // K / L^2: stuck is K / L_0
+    if (stay && film.light > 0) // K / L^2: the stuck sums are K / L_0
+        *stay = {film.stuck / film.light, film_stuck_by_neighbours / film.light};
+    else if (stay)
+        *stay = {};
     std::vector<bool> whole(n, false);
     for (std::uint32_t c : choose(std::move(open), film))
         whole[c] = true;

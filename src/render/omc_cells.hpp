@@ -78,13 +78,42 @@ std::vector<double> without_lone_pixels(std::vector<double> excess, std::uint32_
 std::vector<double> light_areas(const std::vector<double>& means, std::uint32_t width,
                                 std::uint32_t height, std::uint32_t reach);
 
+// Per pixel of a width x height film: the mean luminance per sample of the
+// MLT parts of the other pixels within kNeighbourReach, 0 where they hold
+// no sample. Independent of the pixel's own samples.
+constexpr std::uint32_t kNeighbourReach = 1;
+std::vector<double> neighbour_means(const BurnInParts& parts, std::uint32_t width,
+                                    std::uint32_t height);
+
+// Per pixel of a width x height film of mean luminances `means`, for chains
+// of mean b whose steps are `steps`: the excess correlation where they
+// would stay (chain_correlation less 1, over light_areas), without lone
+// pixels.
+std::vector<double> stay_excess(const std::vector<double>& means, double b, std::uint32_t width,
+                                std::uint32_t height, const ChainSteps& steps);
+
+// The chains' error where they would stay on small bright areas over their
+// error were they free everywhere, before any cell goes (K / L^2 of
+// omc_cells.cpp's ChainsError), measured two ways. K weights each pixel's
+// light by its excess correlation, a function of its mean: `own` takes that
+// mean from the pixel's samples, `neighbours` from its neighbours'
+// (neighbour_means). At a burn-in sample or two per pixel a single bright
+// sample weights itself by its own square, and `own` reads high: on
+// veach-mis at 512x384 it fell from 2.7-3.7 at 1.3 burn-in samples per
+// pixel to 0.28-0.31 at 43. `neighbours` pairs each pixel's light with
+// other samples, which spreads a small area's peak a little: it read
+// 0.05-0.36 over that range, 0.17-0.18 at 43, and reads low only where a
+// small bright area holds too few samples to pair (0.002-0.08 at 0.33)
+// (doc/RESULTS.md, "The chains' stay, two ways").
+struct ChainsStay {
+    double own = 0, neighbours = 0;
+};
+
 // Per cell of `cells` on a width x height film: true where the OMC part
 // renders it whole, from the burn-in's parts, for chains whose steps are
-// `steps`. And, where `stay` is given, the chains' error where they would
-// stay on small bright areas over their error were they free everywhere,
-// before any cell goes (K / L^2 of omc_cells.cpp's ChainsError).
+// `steps`. And, where `stay` is given, the chains' stay (ChainsStay).
 std::vector<bool> omc_cells(const TargetCells& cells, std::uint32_t width, std::uint32_t height,
                             const BurnInParts& parts, const ChainSteps& steps,
-                            double* stay = nullptr);
+                            ChainsStay* stay = nullptr);
 
 } // namespace smallmlt

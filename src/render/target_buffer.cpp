@@ -42,7 +42,7 @@ BurnInParts ranks_parts(RankGroup& ranks, const BurnInParts& parts) {
 
 void TargetBuffer::fix(RankGroup& ranks, std::uint32_t width, std::uint32_t height,
                        const BurnInParts& parts, bool two_stage, bool omc, const ChainSteps& steps,
-                       double* stay) {
+                       ChainsStay* stay) {
     const BurnInParts all = ranks_parts(ranks, parts);
     const TargetCells cells = target_cells(
         width, height, std::accumulate(all.count.begin(), all.count.end(), std::uint64_t(0)));

@@ -25,7 +25,7 @@ class TargetBuffer {
     // where `omc`, for chains whose steps are `steps` (omc_cells, which
     // then writes `stay` where given; without `omc` it is left as it was).
     void fix(RankGroup& ranks, std::uint32_t width, std::uint32_t height, const BurnInParts& parts,
-             bool two_stage, bool omc, const ChainSteps& steps, double* stay = nullptr);
+             bool two_stage, bool omc, const ChainSteps& steps, ChainsStay* stay = nullptr);
     // Cells `cells` of a width x height film with weights `w` (one per cell),
     // 0 where `whole` (per cell; empty: none) says the OMC part renders the
     // cell whole.
