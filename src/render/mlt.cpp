@@ -216,11 +216,13 @@ void MltRenderer::prepare(RankGroup& ranks) {
     if (opt_.restart == kRestartAuto && ranks.all(restart_steps(opt_, chains(), pixels()) > 0))
         opt_.restart = kRestartAutoSteps;
     sample_starts(ranks);
-    if (opt_.restart == kRestartAuto)
-        opt_.restart = ranks.all(restart_pile_steps(opt_, burn_in_.largest_start_share(),
-                                                    burn_in_.chains_stay()) == 0)
-                           ? 0
-                           : kRestartPileSteps;
+    if (opt_.restart == kRestartAuto) {
+        const ChainsStay stay = burn_in_.chains_stay().value_or(ChainsStay{}); // none: 0
+        opt_.restart =
+            ranks.all(restart_pile_steps(opt_, burn_in_.largest_start_share(), stay) == 0)
+                ? 0
+                : kRestartPileSteps;
+    }
     set_stratum_weights(ranks);
     if (split_ == Split::Auto) {
         bool pay = ranks.all(
@@ -393,8 +395,7 @@ MltReport MltRenderer::report() const {
     r.restart_every = opt_.restart;
     r.restart_samples = opt_.restart && opt_.burn_in && kelemen_in_force(opt_);
     r.restarts = restarts_;
-    r.stay_measured = burn_in_.stay_measured();
-    if (r.stay_measured) r.chains_stay = burn_in_.chains_stay();
+    r.chains_stay = burn_in_.chains_stay();
     if (!kelemen_pb_.empty()) {
         double pb = 0; // c b0 of the whole film: the tiles' c B0 by their areas
         for (std::uint32_t t = 0; t < grid_.count(); ++t)

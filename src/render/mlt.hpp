@@ -84,7 +84,7 @@ class MltRenderer : public Integrator {
     double largest_start_share() const { return burn_in_.largest_start_share(); }
     // The chains' error where they would stay over their error were they
     // free, as the OMC part's cells found it (MltBurnIn::chains_stay).
-    const ChainsStay& chains_stay() const { return burn_in_.chains_stay(); }
+    const std::optional<ChainsStay>& chains_stay() const { return burn_in_.chains_stay(); }
 
     // Starts every chain at its starting sample's path.
     void init_chains() { init_chains(burn_in_film_); }

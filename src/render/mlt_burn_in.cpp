@@ -179,8 +179,9 @@ ChainSteps chain_steps(const MltOptions& opt, std::uint32_t width) {
 bool MltBurnIn::fix_target(RankGroup& ranks, const SceneBuffers& scene, TargetBuffer& target,
                            bool two_stage, bool omc) {
     const std::uint32_t w = scene.frame.width, h = scene.frame.height;
-    target.fix(ranks, w, h, parts_, two_stage, omc, chain_steps(opt_, w), &chains_stay_);
-    stay_measured_ = omc;
+    ChainsStay stay;
+    target.fix(ranks, w, h, parts_, two_stage, omc, chain_steps(opt_, w), &stay);
+    if (omc) chains_stay_ = stay;
     // Where the stay will make --restart auto restart (MltRenderer::prepare),
     // the cells are chosen again from the same parts, for the steps of chains
     // that restart: on veach-mis at 512x384, 8x8-block error 1.91 of path
@@ -188,7 +189,7 @@ bool MltBurnIn::fix_target(RankGroup& ranks, const SceneBuffers& scene, TargetBu
     // these (doc/RESULTS.md, "Piles of chains on one path"). The stay is the
     // same on every rank (the parts are summed): every rank chooses again,
     // or none does.
-    if (restart_pile_steps(opt_, 0, chains_stay_) > 0) {
+    if (restart_pile_steps(opt_, 0, stay) > 0) {
         MltOptions restarting = opt_;
         restarting.restart = kRestartPileSteps;
         target.fix(ranks, w, h, parts_, two_stage, omc, chain_steps(restarting, w));

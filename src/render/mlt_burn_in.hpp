@@ -122,11 +122,9 @@ class MltBurnIn {
     double largest_start_share() const { return largest_start_share_; }
     // The chains' error where they would stay on small bright areas, over
     // their error were they free, as the OMC part's cells found it for the
-    // steps of --restart auto before it resolves (omc_cells' `stay`; 0
-    // without cells).
-    const ChainsStay& chains_stay() const { return chains_stay_; }
-    // Whether the cells were chosen, and so chains_stay measured.
-    bool stay_measured() const { return stay_measured_; }
+    // steps of --restart auto before it resolves (omc_cells' `stay`); none
+    // where the cells were not chosen.
+    const std::optional<ChainsStay>& chains_stay() const { return chains_stay_; }
     // What --split auto decides by (split.hpp, chains_pay): V_m, the MLT
     // part's mean luminance and the share of its light behind smooth
     // transmitters, from the parts before any cell went to the OMC part.
@@ -176,8 +174,7 @@ class MltBurnIn {
     BurnInWhole cell_rounds_; // the paths of the rounds that chose the cells
     BurnInSums sums_;
     double omc_variance_ = 0, cell_variance_ = 0, mlt_part_b_ = 0, largest_start_share_ = 0;
-    ChainsStay chains_stay_;
-    bool stay_measured_ = false;
+    std::optional<ChainsStay> chains_stay_;
     SplitEvidence evidence_;
     std::uint32_t rounds_ = 0;        // rounds run, those of restarts included
     std::optional<StartPicks> picks_; // run()'s rounds, until start_chains

@@ -115,11 +115,12 @@ std::string mlt_summary(const MltReport& r) {
                       r.restart_samples ? ", their samples large steps'" : "");
         out += buf;
     }
-    if (r.stay_measured) {
+    if (r.chains_stay) {
         std::snprintf(buf, sizeof buf,
                       "; the chains' stay %.3g by each pixel's samples, %.3g by its neighbours' "
                       "(--restart auto restarts above %g or %g)",
-                      r.chains_stay.own, r.chains_stay.neighbours, kPileStay, kPileStayNeighbours);
+                      r.chains_stay->own, r.chains_stay->neighbours, kPileStay,
+                      kPileStayNeighbours);
         out += buf;
     }
     if (r.strata > 1) {

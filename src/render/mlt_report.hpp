@@ -6,6 +6,7 @@
 #include "render/split.hpp"
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -35,10 +36,9 @@ struct MltReport {
     float kelemen_pb = 0;                          // c b0: c the uniform samples per mutation
     std::uint32_t restart_every = 0, restarts = 0; // --restart's steps; restarts so far
     // Where the chains would stay on small bright areas, their error over
-    // their error were they free (MltBurnIn::chains_stay), measured where the
-    // cells were chosen.
-    ChainsStay chains_stay;
-    bool stay_measured = false;
+    // their error were they free (MltBurnIn::chains_stay); none where the
+    // cells were not chosen.
+    std::optional<ChainsStay> chains_stay;
     bool restart_samples = false; // the restarts' burn-in samples are large steps'
     std::uint32_t strata = 1;     // tiles of stratified MLT
     bool strata_piles = false;    // those of --strata piles, kept
