@@ -358,6 +358,46 @@ TEST(MltSplat, RestartedStratifiedImageMatchesTheTarget) {
     check_splat_image(Target::Luminance, true, 1, 4, 4);
 }
 
+// The restarts' rounds go on along each pixel's Sobol sequence, under one
+// scramble for all restarts (MltRenderer::restart_film): a pixel's restart
+// samples are consecutive points of one sequence, and together a net. Here
+// 100 restarts of 4 rounds put 1,600 of them in each of 256 pixels of the
+// known target, smooth within every pixel; their mean luminance (the burn-in
+// sums' growth over the steps) must lie within 1.5e-6 of the closed form, as
+// root mean square over seeds 1-4. One sequence reads 6.1e-7; a fresh
+// scramble per restart, 100 independent nets of 16 points a pixel, read
+// 6.0e-6 (the mutant restart-rounds-rescrambled).
+TEST(MltRestart, RoundsGoOnAlongEachPixelsSequence) {
+    DeviceScene ds = test::layout_only_scene({}, 16, 16);
+    const double truth = target_integral(), unit = double(1ull << MLT_B_FRAC_BITS);
+    double squares = 0;
+    const std::uint64_t seeds[] = {1, 2, 3, 4};
+    for (std::uint64_t seed : seeds) {
+        MltOptions opt = test::plain_mlt();
+        MltTestHooks hooks;
+        hooks.evaluator = "test/cl/eval_target.cl";
+        opt.threads = 1024;
+        opt.large_step = 0.0f;
+        opt.seed = seed;
+        opt.burn_in_iters = 4;
+        opt.restart = 4;
+        MltRenderer mlt(test::cl(), ds, opt, hooks);
+        mlt.prepare();
+        const MltTally first = mlt.mlt_tally();
+        mlt.step(400);
+        const MltTally all = mlt.mlt_tally();
+        ASSERT_EQ(all.restart_samples, 100u * 4 * 1024);
+        const double sum = double(all.burn_in_lum.at(0) - first.burn_in_lum.at(0)) / unit;
+        const double error = sum / double(all.restart_samples) / truth - 1;
+        std::printf("seed %llu: the restarts' mean %.8f, closed form %.8f, relative error %.2e\n",
+                    (unsigned long long)seed, sum / double(all.restart_samples), truth, error);
+        squares += error * error;
+    }
+    const double rms = std::sqrt(squares / 4);
+    std::printf("root mean square relative error %.2e\n", rms);
+    EXPECT_LT(rms, 1.5e-6);
+}
+
 // MLT renders against PT, block by block, and b against PT's mean:
 // test_render_blocks.cpp.
 

@@ -161,6 +161,8 @@ class MltRenderer : public Integrator {
     // rounds and, where `restart` (the chains have splatted what they owe),
     // every chain's new start among them.
     void restart_work(bool restart);
+    // Where the restarts' rounds lie on the film: one film for all of them.
+    BurnInFilm restart_film() const;
     // The tests' view of the device's buffers and program, for their probes
     // (test/test_support.hpp).
     friend struct MltInspect;
@@ -179,7 +181,6 @@ class MltRenderer : public Integrator {
     StrataBuffer strata_;     // the tiles, the groups' tiles and p b0 per tile
     BurnInFilm burn_in_film_; // where the burn-in's samples lie on the film
     std::uint32_t restarts_ = 0;
-    std::optional<BurnInFilm> restart_film_; // where the next restart's rounds lie
     MltBurnIn burn_in_;
     MltFilm film_;
     Split split_;
