@@ -24,15 +24,16 @@ rm -f "$SCRATCH"/gtest-*.rc "$SCRATCH"/gtest-*.log "$SCRATCH"/rusticl.*
 # The layout probe, the loop limit and argument reads, furnaces, the
 # sampling chi-square tests, a chain-target test, determinism (with many
 # samples in one launch against one at a time: the loop limit's symptom),
-# the film's overflow bound, the split's closed forms, the stuck count and
-# the direct light. The block-wise render tests take minutes on llvmpipe:
-# `make test-rusticl` runs them.
+# the film's overflow bound, the split's closed forms, the stuck count,
+# the direct light and the emission the camera sees. The block-wise
+# render tests take minutes on llvmpipe: `make test-rusticl` runs them.
 RUSTICL_TESTS=${RUSTICL_TESTS-SharedLayout.*:OpenCl.*:Depths/Furnace.*:DiffuseSampling.*:\
 LightSampling.*:DielectricSampling.*:LightPick.*:SmallStep.IntegerDelta*:SobolSampler.Every*:SobolSampler.ABounce*:\
 SobolSampler.Pairs*:\
 Proposals/ChainTarget.StatesFollowTheClosedFormMarginals/0:MltDeterminism.*:\
 Render.SameSeed*:Render.ManySamplesAtOnceEqualOneByOne:FilmOverflow.*:\
-Split.FurnacePartsAreTheClosedForm:StuckChains.EveryChainThatBecameStuckIsCountedOnce:DirectLight.*}
+Split.FurnacePartsAreTheClosedForm:StuckChains.EveryChainThatBecameStuckIsCountedOnce:DirectLight.*:\
+EmissionSeen.MomentIsTheLightsImageOnTheFilm}
 RUSTICL_ICD=/etc/OpenCL/vendors/rusticl.icd
 rusticl() { OCL_ICD_VENDORS=$RUSTICL_ICD RUSTICL_ENABLE=swrast "$@"; }
 if [ "$RUSTICL_TESTS" != none ]; then

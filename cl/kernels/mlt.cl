@@ -46,6 +46,16 @@ __kernel void mlt_luminance(SCENE_ARGS, __global const float* weight, const Targ
     mlt_publish_nonfinite(stats, l_count, nonfinite);
 }
 
+/* The emission the camera sees directly, sample i of stream `seed`
+ * (cl/path/emission_seen.cl), into out[i]. */
+__kernel void mlt_emission_seen(SCENE_ARGS, const ulong seed, const uint pick_bits,
+                                const uint count, __global float4* out) {
+    uint i = get_global_id(0);
+    if (i >= count) return;
+    SceneView sc = SCENE_VIEW();
+    out[i] = emission_seen_sample(&sc, &frame, rng_key(seed, i, 0u), pick_bits);
+}
+
 /* Starts chain c at burn-in sample picks[c] = (round r, index i), the path
  * mlt_luminance drew, its film position read as numbers of the chain's tile
  * (a fresh start outside the tile is moved to its edge). */

@@ -136,4 +136,11 @@ double PixelVariance::value() const {
     return samples_ > 0 ? double(pixels_) * moment_ / samples_ : 0;
 }
 
+double PixelVariance::one_sample(double y) const {
+    if (!(samples_ > 0)) return 0;
+    // A pixel of n samples, one of them y: sample variance y^2 / n.
+    const double per_pixel = y * y * double(pixels_) / samples_;
+    return used_ > 0 ? double(pixels_) * per_pixel / double(used_) : per_pixel;
+}
+
 } // namespace smallmlt

@@ -100,6 +100,10 @@ class PixelVariance {
     // A pixel's sum of luminances y, of their squares y2, and its n samples.
     void add(double y, double y2, std::uint64_t n);
     double value() const;
+    // What value() would gain from one sample of luminance y more in a
+    // pixel of the mean sample count whose samples are otherwise 0: the
+    // least V_o that a light the samples hit at all can give.
+    double one_sample(double y) const;
 
   private:
     double within_ = 0, moment_ = 0, samples_ = 0;

@@ -1,6 +1,7 @@
 #include "render/mlt_burn_in.hpp"
 
 #include "fixed_point.h"
+#include "render/emission_seen.hpp"
 #include "render/mlt_seeds.hpp"
 
 #include <algorithm>
@@ -129,11 +130,17 @@ void MltBurnIn::run(RankGroup& ranks, const MemoryPlan& plan, const SceneBuffers
         // V_o of the film but the OMC part's cells, and V_c of those.
         PixelVariance film, cells;
         const std::uint32_t w = scene.frame.width;
+        auto in_cell = [&](std::uint32_t p) { return target.omc_pixel(p % w, p / w); };
         for (std::size_t p = 0; p < parts_.count.size(); ++p)
-            (target.omc_pixel(std::uint32_t(p % w), std::uint32_t(p / w)) ? cells : film)
+            (in_cell(std::uint32_t(p)) ? cells : film)
                 .add(parts_.luminance(parts_.omc, p), parts_.omc_y2[p], parts_.count[p]);
-        omc_variance_ = film.value();
-        cell_variance_ = cells.value();
+        // With an OMC part, at least what the lights the camera sees give.
+        EmissionSeenParts seen;
+        if (opt_.split != Split::None)
+            seen = emission_seen(cl_, program_, scene, omc_,
+                                 mlt_seed(opt_.seed, MltStream::EmissionSeen), in_cell);
+        omc_variance_ = variance_with_emission_seen(film, seen.film);
+        cell_variance_ = variance_with_emission_seen(cells, seen.cells);
         if (target.omc_cells() == 0) evidence_ = split_evidence(parts_);
     }
 }

@@ -1,7 +1,8 @@
 // The streams of an MLT render, each a seed derived from the render's: the
 // burn-in's picks, the steps, the pixels' Sobol sequences (the burn-in's
-// samples and the split's OMC part), the burn-in's film offset and the
-// rounding of the restarts' samples on the film.
+// samples and the split's OMC part), the burn-in's film offset, the
+// rounding of the restarts' samples on the film and the emitters' points
+// sampled from the eye.
 #pragma once
 #include "base/rng.hpp"
 
@@ -14,7 +15,8 @@ enum class MltStream : std::uint64_t {
     Step = 3,
     Pixel = 4,
     FilmOffset = 5,
-    RestartSplat = 6 // the film's rounding of the restarts' samples
+    RestartSplat = 6, // the film's rounding of the restarts' samples
+    EmissionSeen = 7  // the emitters' points of mlt_emission_seen
 };
 
 inline std::uint64_t mlt_seed(std::uint64_t seed, MltStream s) {

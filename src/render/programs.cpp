@@ -49,6 +49,7 @@ const Row kTable[] = {
     {Stage::Path,     "cl/path/path.cl",                   true,  true},
     {Stage::Path,     "cl/path/eval_result.cl",            false, true},
     {Stage::Path,     kEvaluator,                          false, true},
+    {Stage::Path,     "cl/path/emission_seen.cl",          false, true},
     {Stage::Mlt,      "cl/mlt/chain_value.cl",             false, true},
     {Stage::Mlt,      "cl/mlt/film.cl",                    false, true},
     {Stage::Mlt,      "cl/mlt/mlt_step.cl",                false, true},

@@ -57,9 +57,12 @@ std::string split_defines(Split s);
 // times the chains' time at 128x128 and 169 at its 160x90, and the chains
 // ran one step in the whole render. The bench's scenes ask 0.17
 // (tiny-caustic) to 0.49 (cornell-water), below the cap. And t_o / t_m is
-// at least kOmcMinTimeRatio: V_o is 0 where the burn-in's paths missed what
-// the OMC part renders (water-spark's light covers 3% of a pixel, and 2^19
-// paths hit it about once), and the OMC part must still converge.
+// at least kOmcMinTimeRatio: V_o is 0 where the OMC part renders nothing
+// the burn-in saw, and the OMC part must still converge. V_o is at least
+// what one burn-in sample of the brightest light the camera sees would give
+// it (src/render/emission_seen.hpp): water-spark's light covers 3% of a
+// pixel, 2^19 paths hit it about once, and a burn-in that missed it put
+// the OMC part on the floor.
 // With cells the OMC part renders whole (src/render/omc_cells.hpp), those
 // P_c pixels are a part of their own, A_c = g V_c P_c c_c (V_c, c_c as V_o,
 // c_o, for whole paths there; g = kPixelStratification, as the cells are
