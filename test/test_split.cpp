@@ -408,8 +408,8 @@ TEST(Split, RestartingChainsPayFromAHigherRatio) {
 // seen from the eye (src/render/emission_seen.hpp) still puts one sample's
 // worth of it under V_o, and the cap binds: the OMC part's rays are the
 // chains' times --omc-effort. Without that floor the rule gave it a 16th
-// of that (kOmcMinTimeRatio), and 288 samples a pixel in 20 s where path
-// tracing renders 1,430-1,501. Split.RuleGivesTheOmcPartAtMostTheChainsTime
+// of that (kOmcMinTimeRatio), and 320-336 samples a pixel in 20 s where
+// path tracing renders 1,582-1,664. Split.RuleGivesTheOmcPartAtMostTheChainsTime
 // checks the cap itself.
 TEST(Split, ChainsRunBesideABrightLightSeenDirectly) {
     DeviceScene ds = prepare_scene(test::scene("water-spark", 160, 90));
