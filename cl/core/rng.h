@@ -33,4 +33,9 @@ inline u32 rng_u32(u64 key, u32 dim) {
     return (u32)(rng_mix64(key + (u64)(dim + 1u) * 0x9E3779B97F4A7C15UL) >> 32);
 }
 
+/* Number `dim` of stream `key`, as a float in [0, 1) (24 bits). */
+inline float rng_unit(u64 key, u32 dim) {
+    return (float)(rng_u32(key, dim) >> 8) * (1.0f / 16777216.0f);
+}
+
 #endif

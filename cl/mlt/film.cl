@@ -57,20 +57,15 @@ inline FilmWord film_round(float v, float u) {
 #endif
 }
 
-/* A number in [0, 1) of the stream of `key` (24 bits). */
-inline float film_unit(ulong key, uint dim) {
-    return (float)(rng_u32(key, dim) >> 8) * (1.0f / 16777216.0f);
-}
-
 /* w * f / lum(f) in the film's units, per channel, rounded with the numbers
  * dim .. dim + 2 of key's stream; false if it adds nothing. */
 inline bool film_value(const Film* film, float3 f, float w, ulong key, uint dim, FilmWord* c) {
     float lum = path_luminance(f);
     if (!(w > 0.0f) || !(lum > 0.0f)) return false;
     float3 v = f * (w / lum) * film->shape.scale;
-    c[0] = film_round(v.x, film_unit(key, dim));
-    c[1] = film_round(v.y, film_unit(key, dim + 1u));
-    c[2] = film_round(v.z, film_unit(key, dim + 2u));
+    c[0] = film_round(v.x, rng_unit(key, dim));
+    c[1] = film_round(v.y, rng_unit(key, dim + 1u));
+    c[2] = film_round(v.z, rng_unit(key, dim + 2u));
     return true;
 }
 

@@ -260,7 +260,7 @@ inline uint mlt_splat_state(const Frame* frame, const MltTarget* target, const F
 
 /* The step's number for choosing the next state: uniform in [0, K). */
 inline float mlt_select_number(ulong key, uint proposals) {
-    return (float)(rng_u32(key, MLT_DIM_ACCEPT) >> 8) * (1.0f / 16777216.0f) * (float)proposals;
+    return rng_unit(key, MLT_DIM_ACCEPT) * (float)proposals;
 }
 
 /* The chain's next state among (x, y_1..y_K), picked by u in [0, K) in

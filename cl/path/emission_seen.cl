@@ -11,8 +11,7 @@
 float4 emission_seen_sample(const SceneView* sc, const Frame* frame, ulong key, uint pick_bits) {
     uint pick = light_pick(sc->lights, sc->num_lights,
                            pick_bits ? rng_u32(key, 0u) >> (32u - pick_bits) : 0u);
-    float u1 = (float)(rng_u32(key, 1u) >> 8) * 0x1.0p-24f;
-    float u2 = (float)(rng_u32(key, 2u) >> 8) * 0x1.0p-24f;
+    float u1 = rng_unit(key, 1u), u2 = rng_unit(key, 2u);
     float3 eye = (float3)(frame->eye[0], frame->eye[1], frame->eye[2]);
     LightSample ls;
     float2 film;

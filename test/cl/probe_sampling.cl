@@ -2,10 +2,6 @@
  * (test/test_sampling.cpp): each draws n samples from stream numbers
  * rng_key(seed, i, 0) and reports them for the host to histogram. */
 
-inline float probe_unit(ulong key, uint dim) {
-    return (float)(rng_u32(key, dim) >> 8) * (1.0f / 16777216.0f);
-}
-
 /* Points that light_sample_tri picks on triangle `tri`, seen from a point
  * one unit in front of its centroid: out[i] = the point (xyz). */
 __kernel void probe_light_points(__global const Triangle* tris, __global const Material* mats,
@@ -18,7 +14,7 @@ __kernel void probe_light_points(__global const Triangle* tris, __global const M
     float3 x = c + normalize(geo_tri_normal(t));
     ulong key = rng_key(seed, i, 0u);
     LightSample ls;
-    bool ok = light_sample_tri(t, mats, x, probe_unit(key, 0u), probe_unit(key, 1u), &ls);
+    bool ok = light_sample_tri(t, mats, x, rng_unit(key, 0u), rng_unit(key, 1u), &ls);
     out[i] = ok ? (float4)(x + ls.wi * ls.dist, 1.0f) : (float4)(0.0f);
 }
 
@@ -43,8 +39,8 @@ __kernel void probe_diffuse_dirs(const float4 n, const ulong seed, const uint n_
     m.kd[0] = m.kd[1] = m.kd[2] = 0.5f;
     float3 nn = normalize(n.xyz);
     ShadingFrame f = frame_make(nn, nn);
-    BsdfSample s = diffuse_sample(&m, (float3)(0.0f, 0.0f, 1.0f), 0.0f, probe_unit(key, 0u),
-                                  probe_unit(key, 1u));
+    BsdfSample s =
+        diffuse_sample(&m, (float3)(0.0f, 0.0f, 1.0f), 0.0f, rng_unit(key, 0u), rng_unit(key, 1u));
     out[i] = (float4)(frame_to_world(&f, s.wi), s.pdf_w);
 }
 
