@@ -142,10 +142,10 @@ check target_name 2 "--target: 'kelemen' is not a target (luminance or two-stage
 check omc_cells_name 2 "--omc-cells auto: expected on or off" -- "$BIN" render scenes/cornell.scene --omc-cells auto
 check weights_name 2 "--weights: 'veach' is not a weighting (expected or kelemen)" -- "$BIN" render scenes/cornell.scene --weights veach
 check target_summary 0 "target two-stage (" -- "$BIN" render scenes/cornell-water.scene --split visible --target two-stage --threads 1024 --burn-in-iters 4 --width 16 --height 16 --spp 8 --out "$DIR/two-stage.png"
-check weights_summary 0 "Kelemen's weights (p b0 = " -- "$BIN" render scenes/cornell-water.scene --split visible --weights kelemen --restart 0 --threads 1024 --burn-in-iters 4 --width 16 --height 16 --spp 8 --out "$DIR/kelemen.png"
+check weights_summary 0 "Kelemen's weights (M p b0 = " -- "$BIN" render scenes/cornell-water.scene --split visible --weights kelemen --restart 0 --threads 1024 --burn-in-iters 4 --width 16 --height 16 --spp 8 --out "$DIR/kelemen.png"
 # --restart auto: 1,024 chains on 256 pixels restart every 8 steps (20 steps: twice).
 check restart_summary 0 "; chains restarted every 8 steps, 2 times, their samples large steps'" -- "$BIN" render scenes/cornell-water.scene --split visible --restart auto --threads 1024 --burn-in-iters 4 --width 16 --height 16 --spp 80 --out "$DIR/restart.png"
-check restart_weights 0 "Kelemen's weights (c b0 = " -- "$BIN" render scenes/cornell-water.scene --split visible --restart auto --threads 1024 --burn-in-iters 4 --width 16 --height 16 --spp 80 --out "$DIR/restart.png"
+check restart_weights 0 "Kelemen's weights (M c b0 = " -- "$BIN" render scenes/cornell-water.scene --split visible --restart auto --threads 1024 --burn-in-iters 4 --width 16 --height 16 --spp 80 --out "$DIR/restart.png"
 check large_step_range 2 "--large-step: '1.5' is not a probability" -- "$BIN" render scenes/cornell.scene --large-step 1.5
 check sampler_bad 2 "--sampler: 'halton' is not a sampler (sobol or random)" -- "$BIN" render scenes/cornell.scene --sampler halton
 check rr_threshold_zero 2 "--rr-threshold: '0' is not a positive number" -- "$BIN" render scenes/cornell.scene --rr-threshold 0

@@ -332,6 +332,42 @@ TEST(MltSplat, KelemenImageMatchesTheTargetWithAWrongB0) {
     check_splat_image(Target::Luminance, true, 3);
 }
 
+// M, the chain's mutations that Kelemen's weights count as one sample,
+// scales the weights' c b0 and nothing before it: at one seed, M = 1 and
+// M = 3 burn in alike and weigh with c b0 and 3 c b0. Given none, M is 3
+// where the chains restart and 1 where they do not. That the image stays
+// the target's with M = 3 is MltSplat.RestartedImageMatchesTheTarget's.
+TEST(MltSplat, KelemenWeightsCountMMutationsAsOneSample) {
+    DeviceScene ds = test::layout_only_scene({}, 16, 16);
+    MltTestHooks hooks;
+    hooks.evaluator = "test/cl/eval_target.cl";
+    MltOptions opt = test::plain_mlt();
+    opt.kelemen = true;
+    opt.large_step = 0.3f;
+    opt.threads = 1024;
+    opt.burn_in_iters = 4;
+    opt.restart = 4;
+    std::vector<MltReport> r;
+    std::vector<double> b;
+    for (std::optional<double> m :
+         {std::optional<double>(1.0), std::optional<double>(3.0), std::optional<double>()}) {
+        opt.mutations_per_sample = m;
+        MltRenderer mlt(test::cl(), ds, opt, hooks);
+        mlt.prepare();
+        mlt.step(4);
+        r.push_back(mlt.report());
+        b.push_back(mlt.b());
+    }
+    EXPECT_EQ(b[0], b[1]) << "M changed the burn-in";
+    EXPECT_GT(r[0].kelemen_pb, 0.0f);
+    EXPECT_NEAR(r[1].kelemen_pb, 3 * r[0].kelemen_pb, 1e-6 * r[1].kelemen_pb);
+    EXPECT_EQ(r[2].kelemen_pb, r[1].kelemen_pb) << "restarting chains' default M";
+    EXPECT_EQ(r[2].mutations_per_sample, kDefaultMutationsPerSampleRestart);
+    opt.mutations_per_sample.reset();
+    opt.restart = 0;
+    EXPECT_EQ(mutations_per_sample_of(opt), 1.0) << "chains that do not restart";
+}
+
 // Stratified MLT (src/render/strata.hpp): 16 tiles of 4 x 4 bins, each
 // normalized by its own B, with the chains dealt by brightness; the image is
 // the same, with expected values and with Kelemen's weights (a B0 per tile).
@@ -347,7 +383,8 @@ TEST(MltSplat, StratifiedKelemenImageMatchesTheTarget) {
 // splats what it owes and starts again at a pick of 4 fresh burn-in rounds,
 // whose samples also count in b (400K of them over the render); the image
 // is the same, with Kelemen's weights (the default) and with expected
-// values, and in tiles. So short a chain owes a good part of its weight
+// values, and in tiles; Kelemen's weights then count 3 of a chain's
+// mutations as one sample (M's default). So short a chain owes a good part of its weight
 // when it restarts: a restart that dropped it would darken every bin.
 TEST(MltSplat, RestartedImageMatchesTheTarget) {
     check_splat_image(Target::Luminance, false, 1, 0, 4);

@@ -367,13 +367,14 @@ TEST(MpiRender, KelemenRanksWeighWithOneB0) {
     ASSERT_TRUE(ex.complete);
     // With --restart auto, 256 chains on 256 pixels restart every
     // kRestartAutoSteps steps from 2 rounds: c is p (a restarting render's)
-    // and 2 / kRestartAutoSteps restart samples per mutation.
+    // and 2 / kRestartAutoSteps restart samples per mutation; the weights
+    // take M c b0, M a restarting render's mutations per sample.
     MltOptions restarting = opt;
     restarting.restart = kRestartAutoSteps;
     const double c =
         double(large_step_of(restarting)) + double(opt.burn_in_iters) / kRestartAutoSteps;
-    const float want = float(c * mlt_b(lum, samples));
-    std::printf("c b0: rank 0 %.6g, rank 1 %.6g, of the union %.6g\n", pb[0], pb[1], want);
+    const float want = float(c * mlt_b(lum, samples) * mutations_per_sample_of(restarting));
+    std::printf("M c b0: rank 0 %.6g, rank 1 %.6g, of the union %.6g\n", pb[0], pb[1], want);
     EXPECT_GT(want, 0.0f);
     EXPECT_EQ(pb[0], want);
     EXPECT_EQ(pb[1], want);

@@ -75,6 +75,7 @@ TEST(Options, EmptyCommandLineGivesTheLibraryDefaults) {
     EXPECT_EQ(m.omc_cells, lib.omc_cells);
     EXPECT_EQ(m.target, lib.target);
     EXPECT_EQ(m.kelemen, lib.kelemen);
+    EXPECT_EQ(m.mutations_per_sample, lib.mutations_per_sample);
     EXPECT_EQ(m.strata, lib.strata);
     EXPECT_EQ(m.film_step, lib.film_step);
     EXPECT_EQ(m.path_step, lib.path_step);
@@ -232,6 +233,10 @@ TEST(Options, ChoicesSetTheirFields) {
     EXPECT_EQ(parse("render s.scene --restart 32").render.mlt.restart, 32u);
     EXPECT_EQ(parse("render s.scene --restart auto").render.mlt.restart, kRestartAuto);
     EXPECT_EQ(parse("render s.scene --path-step 64").render.mlt.path_step, 64u);
+    EXPECT_EQ(parse("render s.scene --mutations-per-sample 1").render.mlt.mutations_per_sample,
+              std::optional<double>(1.0));
+    EXPECT_EQ(usage_error("render s.scene --mutations-per-sample 0"),
+              "--mutations-per-sample: '0' is not a positive number of mutations");
     EXPECT_EQ(usage_error("render s.scene --path-step 100"),
               "--path-step: 100 is not a power of two");
     EXPECT_TRUE(parse("render s.scene --burn-in omc").render.mlt.burn_in);
@@ -263,6 +268,16 @@ TEST(Options, OtherMethodsFlagsWarn) {
     EXPECT_TRUE(
         parse("render s.scene --method pt --sampler random --spp 2").render.warnings.empty());
     EXPECT_TRUE(parse("render s.scene --path-step 64 --threads 64").render.warnings.empty());
+}
+
+// --mutations-per-sample weighs Kelemen's weights: with expected values
+// alone it changes nothing, and says so.
+TEST(Options, MutationsPerSampleWarnsWithExpectedValues) {
+    EXPECT_EQ(parse("render s.scene --weights expected --mutations-per-sample 2").render.warnings,
+              std::vector<std::string>{"warning: --mutations-per-sample changes nothing with "
+                                       "--weights expected (ignored)"});
+    EXPECT_TRUE(parse("render s.scene --mutations-per-sample 2").render.warnings.empty());
+    EXPECT_TRUE(parse("render s.scene --weights expected").render.warnings.empty());
 }
 
 // A missing or bad value is a UsageError that starts with the flag's name.

@@ -75,6 +75,12 @@ RenderOptions parse_render(ArgReader& r) {
     RenderOptions o;
     const std::vector<const Flag*> given = parse_flags(r, o);
     o.warnings = idle_flag_warnings(given, o.method);
+    if (o.method == Method::Mlt && !o.mlt.kelemen)
+        for (const Flag* f : given)
+            if (std::string(f->name) == "--mutations-per-sample")
+                o.warnings.push_back(
+                    "warning: --mutations-per-sample changes nothing with --weights expected "
+                    "(ignored)");
     if (o.scene.empty()) throw UsageError("render: no scene file given");
     if (o.spp && o.time_s) throw UsageError("--spp and --time: give one of them, not both");
     if (!o.spp && !o.time_s) o.spp = kDefaultSpp;

@@ -286,6 +286,19 @@ const std::vector<Flag> kMltFlags = {
      "Kelemen's weights, which also count every large step as an independent sample "
      "(default {default}; doc/design.md, \"Kelemen's weights\")",
      0, 0, "weighting", [] { return std::string(MltOptions().kelemen ? "kelemen" : "expected"); }},
+    {"--mutations-per-sample", "M", Section::Mlt,
+     [](RenderOptions& o, const FlagValue& v) {
+         o.mlt.mutations_per_sample = v.positive("number of mutations");
+     },
+     "Kelemen's weights count M of a chain's mutations as one independent sample beside the "
+     "large steps' and the restarts' samples: a chain's mutations are correlated, so its "
+     "light counts for less where those also find it; any M leaves the image unbiased "
+     "(default {default}; 1 is Kelemen's; doc/design.md, \"Kelemen's weights\")",
+     0, 0, nullptr,
+     [] {
+         return number(default_mutations_per_sample(true)) + " where chains restart, " +
+                number(default_mutations_per_sample(false)) + " where they do not";
+     }},
     {"--stuck-run", "R", Section::Mlt,
      [](RenderOptions& o, const FlagValue& v) { o.mlt.stuck_run = std::uint32_t(v.integer()); },
      "a chain that rejects R proposals in a row counts as stuck (default {default}); the "

@@ -9,6 +9,7 @@
 #include "render/ranks.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <numeric>
 
 namespace smallmlt {
@@ -39,6 +40,9 @@ const MltOptions& check_options(const MltOptions& opt, const MltTestHooks& hooks
         throw UsageError("--path-step: " + std::to_string(opt.path_step) +
                          " is not a power of two from " + std::to_string(kPathStepMin) + " to " +
                          std::to_string(kPathStepMax));
+    if (opt.mutations_per_sample &&
+        !(*opt.mutations_per_sample > 0 && std::isfinite(*opt.mutations_per_sample)))
+        throw UsageError("--mutations-per-sample: must be a finite number above 0");
     return opt;
 }
 
@@ -180,8 +184,10 @@ void MltRenderer::set_stratum_weights(RankGroup& ranks) {
         for (std::uint32_t t = 0; t < grid_.count(); ++t) {
             kelemen_large_[t] = p * density[t];
             kelemen_rate_[t] = kelemen_large_[t] + q[t];
-            kelemen_pb_[t] = float(kelemen_rate_[t] * b0[t] * hooks_.b0_scale);
+            kelemen_pb_[t] =
+                float(kelemen_rate_[t] * b0[t] * hooks_.b0_scale * mutations_per_sample_of(opt_));
             // the large steps' layer by the b0 of the weights, as they have it
+            // (M b0 for M mutations per sample)
             kelemen_b0_[t] = double(kelemen_pb_[t]) / kelemen_rate_[t];
             w[t].kelemen_pb = kelemen_pb_[t];
         }
@@ -399,6 +405,7 @@ MltReport MltRenderer::report() const {
     r.mlt_relative_variance = omc_ ? mlt_relative_variance() : 0;
     r.behind_specular_share = omc_ ? behind_specular_share() : 0;
     r.kelemen = opt_.kelemen;
+    r.mutations_per_sample = mutations_per_sample_of(opt_);
     r.strata = grid_.count();
     r.strata_piles = opt_.strata == kStrataPiles;
     r.restart_every = opt_.restart;

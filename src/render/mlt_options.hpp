@@ -26,6 +26,12 @@ constexpr float kDefaultLargeStepKelemen = 0.3f; // with burn-in and Kelemen's w
 // With those and restarts, whose samples are large steps' too
 // (doc/RESULTS.md, "Large steps beside restarts").
 constexpr float kDefaultLargeStepRestart = 0.1f;
+// Kelemen's weights count this many of a chain's mutations as one
+// independent sample beside the restarts' samples, where chains restart,
+// and as one beside the large steps alone (doc/RESULTS.md, "A chain's
+// mutations as a third of a sample").
+constexpr double kDefaultMutationsPerSampleRestart = 3;
+constexpr double kDefaultMutationsPerSample = 1;
 constexpr float kDefaultLargeStepBurnIn = 0.1f;   // with burn-in and expected values
 constexpr float kDefaultLargeStepNoBurnIn = 0.5f; // the paper's baseline without
 // --film-step: 0 is Kelemen's step, a 64th of the film; auto is the larger of
@@ -112,6 +118,12 @@ struct MltOptions {
     // chains' expected values by the balance heuristic. Off: expected values
     // alone, and the image's mean is b.
     bool kelemen = kDefaultKelemen;
+    // Kelemen's weights take the chains' density as I/b over this: M of a
+    // chain's mutations count as one independent sample beside the large
+    // steps'. Any M > 0 leaves the image unbiased (doc/design.md, "Kelemen's
+    // weights"); it only moves light between the two estimates. Unset:
+    // default_mutations_per_sample (mutations_per_sample_of).
+    std::optional<double> mutations_per_sample;
     // Stratified MLT (src/render/strata.hpp): the tiles' side in pixels, 0
     // for none (one tile, the whole film), kStrataAuto for the rule's,
     // kStrataPiles for the rule's where the chains pile up (strata_for_piles).
@@ -146,6 +158,16 @@ inline bool restarts_resolved(const MltOptions& opt) {
 inline float large_step_of(const MltOptions& opt) {
     return opt.large_step.value_or(
         default_large_step(opt.burn_in, opt.kelemen, restarts_resolved(opt)));
+}
+
+// M, the chain's mutations that Kelemen's weights count as one sample,
+// where none is given: it depends on whether chains restart.
+constexpr double default_mutations_per_sample(bool restarts) {
+    return restarts ? kDefaultMutationsPerSampleRestart : kDefaultMutationsPerSample;
+}
+// M of a render of `opt`, once --restart auto is resolved.
+inline double mutations_per_sample_of(const MltOptions& opt) {
+    return opt.mutations_per_sample.value_or(default_mutations_per_sample(restarts_resolved(opt)));
 }
 
 // --film-step's pixels asked for (0: film_step_share 64ths of the film, with

@@ -105,8 +105,9 @@ std::string mlt_summary(const MltReport& r) {
         out += buf;
     }
     if (r.kelemen && r.steps > 0) {
-        std::snprintf(buf, sizeof buf, "; Kelemen's weights (%s b0 = %.4g)",
-                      r.restart_samples ? "c" : "p", double(r.kelemen_pb));
+        std::snprintf(buf, sizeof buf,
+                      "; Kelemen's weights (M %s b0 = %.4g, M = %.3g mutations a sample)",
+                      r.restart_samples ? "c" : "p", double(r.kelemen_pb), r.mutations_per_sample);
         out += buf;
     }
     if (r.restarts) {

@@ -33,7 +33,8 @@ struct MltReport {
     std::uint32_t omc_cell_spp = 0; // in the cells the OMC part renders whole
     double omc_cell_rate = 0;
     bool kelemen = false;
-    float kelemen_pb = 0;                          // c b0: c the uniform samples per mutation
+    float kelemen_pb = 0; // M c b0: c the uniform samples per mutation, M mutations a sample
+    double mutations_per_sample = 1;
     std::uint32_t restart_every = 0, restarts = 0; // --restart's steps; restarts so far
     // Where the chains would stay on small bright areas, their error over
     // their error were they free (MltBurnIn::chains_stay); none where the
