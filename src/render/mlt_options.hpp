@@ -27,9 +27,9 @@ constexpr float kDefaultLargeStepKelemen = 0.3f; // with burn-in and Kelemen's w
 // (doc/RESULTS.md, "Large steps beside restarts").
 constexpr float kDefaultLargeStepRestart = 0.1f;
 // Kelemen's weights count this many of a chain's mutations as one
-// independent sample beside the restarts' samples, where chains restart,
-// and as one beside the large steps alone (doc/RESULTS.md, "A chain's
-// mutations as a third of a sample").
+// independent sample: 3 where the chains restart, whose uniform samples are
+// mostly the restarts', and 1 beside the large steps alone (doc/RESULTS.md,
+// "A chain's mutations as a third of a sample").
 constexpr double kDefaultMutationsPerSampleRestart = 3;
 constexpr double kDefaultMutationsPerSample = 1;
 constexpr float kDefaultLargeStepBurnIn = 0.1f;   // with burn-in and expected values
@@ -120,9 +120,9 @@ struct MltOptions {
     bool kelemen = kDefaultKelemen;
     // Kelemen's weights take the chains' density as I/b over this: M of a
     // chain's mutations count as one independent sample beside the large
-    // steps'. Any M > 0 leaves the image unbiased (doc/design.md, "Kelemen's
-    // weights"); it only moves light between the two estimates. Unset:
-    // default_mutations_per_sample (mutations_per_sample_of).
+    // steps' and the restarts' samples. Any M > 0 leaves the image unbiased
+    // (doc/design.md, "Kelemen's weights"); it only moves light between the
+    // two estimates. Unset: default_mutations_per_sample (mutations_per_sample_of).
     std::optional<double> mutations_per_sample;
     // Stratified MLT (src/render/strata.hpp): the tiles' side in pixels, 0
     // for none (one tile, the whole film), kStrataAuto for the rule's,
