@@ -4,6 +4,8 @@
 
 #include "base/error.hpp"
 
+#include <optional>
+#include <string>
 #include <vector>
 
 namespace smallmlt {
@@ -71,16 +73,23 @@ std::vector<std::string> idle_flag_warnings(const std::vector<const Flag*>& give
     return w;
 }
 
+// --mutations-per-sample weighs Kelemen's weights: with expected values
+// alone it changes nothing.
+std::optional<std::string> weights_flag_warning(const std::vector<const Flag*>& given,
+                                                const RenderOptions& o) {
+    if (o.method != Method::Mlt || o.mlt.kelemen) return std::nullopt;
+    for (const Flag* f : given)
+        if (std::string(f->name) == "--mutations-per-sample")
+            return "warning: --mutations-per-sample changes nothing with --weights expected "
+                   "(ignored)";
+    return std::nullopt;
+}
+
 RenderOptions parse_render(ArgReader& r) {
     RenderOptions o;
     const std::vector<const Flag*> given = parse_flags(r, o);
     o.warnings = idle_flag_warnings(given, o.method);
-    if (o.method == Method::Mlt && !o.mlt.kelemen)
-        for (const Flag* f : given)
-            if (std::string(f->name) == "--mutations-per-sample")
-                o.warnings.push_back(
-                    "warning: --mutations-per-sample changes nothing with --weights expected "
-                    "(ignored)");
+    if (const auto w = weights_flag_warning(given, o)) o.warnings.push_back(*w);
     if (o.scene.empty()) throw UsageError("render: no scene file given");
     if (o.spp && o.time_s) throw UsageError("--spp and --time: give one of them, not both");
     if (!o.spp && !o.time_s) o.spp = kDefaultSpp;
