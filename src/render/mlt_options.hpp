@@ -26,14 +26,14 @@ constexpr float kDefaultLargeStepKelemen = 0.3f; // with burn-in and Kelemen's w
 // With those and restarts, whose samples are large steps' too
 // (doc/RESULTS.md, "Large steps beside restarts").
 constexpr float kDefaultLargeStepRestart = 0.1f;
+constexpr float kDefaultLargeStepBurnIn = 0.1f;   // with burn-in and expected values
+constexpr float kDefaultLargeStepNoBurnIn = 0.5f; // the paper's baseline without
 // Kelemen's weights count this many of a chain's mutations as one
 // independent sample: 3 where the chains restart, whose uniform samples are
 // mostly the restarts', and 1 beside the large steps alone (doc/RESULTS.md,
 // "A chain's mutations as a third of a sample").
 constexpr double kDefaultMutationsPerSampleRestart = 3;
 constexpr double kDefaultMutationsPerSample = 1;
-constexpr float kDefaultLargeStepBurnIn = 0.1f;   // with burn-in and expected values
-constexpr float kDefaultLargeStepNoBurnIn = 0.5f; // the paper's baseline without
 // --film-step: 0 is Kelemen's step, a 64th of the film; auto is the larger of
 // kFilmStepAutoShare 64ths of the film and kFilmStepFloorPixels (doc/design.md,
 // "Small steps on the film"; a 32nd: doc/RESULTS.md, "A 32nd of the film").
